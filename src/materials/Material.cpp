@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "materials/Material.hpp"
+
+namespace mpm {
+
+ElasticConstants::ElasticConstants(double youngs, double poisson) : E(youngs), nu(poisson) {
+    G = E / (2.0 * (1.0 + nu));
+    lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    K = E / (3.0 * (1.0 - 2.0 * nu));
+    M = K + 4.0 * G / 3.0;
+}
+
+ElasticConstants::ElasticConstants(const Dictionary& dict)
+    : ElasticConstants(dict.getScalar("E", Bounds::positive()),
+                       dict.getScalar("nu", {-1.0, 0.5, false, false})) {}
+
+template <int dim>
+Material<dim>::Material(const Dictionary& dict, std::string name)
+    : name_(std::move(name)), density_(dict.getScalar("density", Bounds::positive())) {}
+
+template <int dim>
+std::unique_ptr<Material<dim>> Material<dim>::create(const Dictionary& dict,
+                                                     const std::string& name) {
+    auto m = MaterialRegistry<dim>::create(dict, name);
+    dict.checkUnknownKeys();
+    return m;
+}
+
+template class Material<2>;
+template class Material<3>;
+
+} // namespace mpm

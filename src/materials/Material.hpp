@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Dictionary.hpp"
+#include "core/Registry.hpp"
+#include "core/Types.hpp"
+#include "particles/Particles.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+/// Elastic constants from E and ν, checked on input (E > 0, -1 < ν < 0.5).
+struct ElasticConstants {
+    double E = 0, nu = 0;
+    double lambda = 0; ///< Lamé's first parameter [Pa]
+    double G = 0;      ///< shear modulus [Pa]
+    double K = 0;      ///< bulk modulus [Pa]
+    double M = 0;      ///< constrained (P-wave) modulus K + 4G/3 [Pa]
+
+    explicit ElasticConstants(const Dictionary& dict);
+    ElasticConstants(double youngs, double poisson);
+};
+
+/// A constitutive model. One object serves all particles of one named material; the solver
+/// calls it once per step with their indices (no per-particle virtual call, DESIGN §7).
+template <int dim> class Material {
+public:
+    Material(const Dictionary& dict, std::string name);
+    virtual ~Material() = default;
+
+    const std::string& name() const { return name_; }
+    /// Density at seeding ρ₀ [kg/m³].
+    double density() const { return density_; }
+    /// Largest elastic wave speed at density ρ₀, √(M/ρ₀) [m/s], for the CFL limit.
+    virtual double waveSpeed() const = 0;
+
+    /// Set the state of freshly seeded particles with Cauchy stress σ₀ (zero for none).
+    virtual void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const = 0;
+
+    /// Advance the stress of `ids` over dt from the velocity gradient p.L (F and V are already
+    /// updated by the solver). Returns the first particle whose stress is not finite, or -1.
+    virtual Index updateStress(Particles<dim>& p, const std::vector<Index>& ids,
+                               double dt) const = 0;
+
+    /// Coefficient of lateral earth pressure at rest used when a geostatic initial stress gives
+    /// no K0: ν/(1 - ν) for elastic models.
+    virtual double defaultK0() const = 0;
+
+    /// Stored elastic energy of particle i [J] (per metre of depth in 2D).
+    virtual double strainEnergy(const Particles<dim>& p, Index i) const = 0;
+
+    /// Build the material named `name` from its dictionary (`type:` picks the model).
+    static std::unique_ptr<Material> create(const Dictionary& dict, const std::string& name);
+
+private:
+    std::string name_;
+    double density_;
+};
+
+template <int dim> using MaterialRegistry = Registry<Material<dim>, const std::string&>;
+
+/// Embed a dim×dim tensor in 3×3 (plane strain: zero third row and column).
+template <int dim> inline Mat3 embed3(const Mat<dim>& a) {
+    Mat3 r = Mat3::Zero();
+    r.template topLeftCorner<dim, dim>() = a;
+    return r;
+}
+
+} // namespace mpm

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "monitors/FunctionObject.hpp"
+#include "solver/Reduce.hpp"
+
+namespace mpm {
+
+/// `type: energy`: kinetic Σ ½ m v², strain Σ ψ V (each material's stored energy),
+/// gravitational -Σ m g·x (zero at the origin) and their total [J] (per metre in 2D).
+template <int dim> class Energy final : public FunctionObject<dim> {
+public:
+    Energy(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {}
+
+protected:
+    std::vector<std::string> columns(const State<dim>&) const override {
+        return {"kinetic", "strain", "gravitational", "total"};
+    }
+    std::vector<double> values(const State<dim>& s) const override {
+        const auto& p = s.particles;
+        const double kinetic = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
+            return 0.5 * p.mass[i] * p.v[i].squaredNorm();
+        });
+        const double strain = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
+            return s.materials[p.material[i]]->strainEnergy(p, i);
+        });
+        const double gravitational = deterministicSum(
+            static_cast<Index>(p.size()), [&](Index i) { return -p.mass[i] * s.gravity.dot(p.x[i]); });
+        return {kinetic, strain, gravitational, kinetic + strain + gravitational};
+    }
+};
+
+MPM_REGISTER(FunctionObjectRegistry<2>, Energy<2>, "energy");
+MPM_REGISTER(FunctionObjectRegistry<3>, Energy<3>, "energy");
+
+} // namespace mpm

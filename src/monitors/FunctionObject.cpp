@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "monitors/FunctionObject.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+
+namespace mpm {
+
+template <int dim>
+FunctionObject<dim>::FunctionObject(const Dictionary& dict, std::string name)
+    : name_(std::move(name)) {
+    const std::string wc = dict.getWordOr("writeControl", "timeStep", {"timeStep", "runTime"});
+    byTime_ = wc == "runTime";
+    interval_ = byTime_ ? dict.getScalarOr("writeInterval", 0.0, Bounds::nonNegative())
+                        : dict.getIntOr("writeInterval", 1, Bounds::closed(1, 2e9));
+}
+
+template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& time) {
+    const auto dir = cs.path("postProcessing") / name_ / timeName(time.value(), 6);
+    std::filesystem::create_directories(dir);
+    out_.open(dir / (name_ + ".dat"));
+    if (!out_) throw RunError("cannot write " + (dir / (name_ + ".dat")).string());
+    precision_ = std::max(time.writePrecision(), 10);
+    lastIndex_ = byTime_ ? static_cast<long>(std::floor(time.value() / std::max(interval_, 1e-300)))
+                         : time.index();
+}
+
+template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, const Time& time) {
+    if (!headerDone_) {
+        out_ << "# " << name_ << "\n# time";
+        for (const auto& c : columns(s)) out_ << ' ' << c;
+        out_ << '\n';
+        headerDone_ = true;
+    }
+    out_ << std::setprecision(precision_) << std::scientific << time.value();
+    for (double v : values(s)) out_ << ' ' << v;
+    out_ << '\n';
+    out_.flush();
+}
+
+template <int dim> void FunctionObject<dim>::execute(const State<dim>& s, const Time& time) {
+    long idx = 0;
+    if (byTime_)
+        idx = interval_ > 0 ? static_cast<long>(std::floor(time.value() / interval_ + 1e-8))
+                            : time.index();
+    else
+        idx = time.index() / static_cast<long>(interval_);
+    if (idx <= lastIndex_) return;
+    lastIndex_ = idx;
+    executeNow(s, time);
+}
+
+template <int dim>
+std::vector<std::unique_ptr<FunctionObject<dim>>>
+FunctionObject<dim>::createAll(const Dictionary& controlDict) {
+    std::vector<std::unique_ptr<FunctionObject>> all;
+    if (!controlDict.has("functions")) return all;
+    const Dictionary fns = controlDict.subDict("functions");
+    for (const std::string& name : fns.keys()) {
+        const Dictionary d = fns.subDict(name);
+        all.push_back(FunctionObjectRegistry<dim>::create(d, name));
+        d.checkUnknownKeys();
+    }
+    fns.checkUnknownKeys();
+    return all;
+}
+
+template class FunctionObject<2>;
+template class FunctionObject<3>;
+
+} // namespace mpm

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Case.hpp"
+#include "case/Dictionary.hpp"
+#include "case/Time.hpp"
+#include "core/Registry.hpp"
+#include "solver/State.hpp"
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+/// A run-time monitor from controlDict `functions: {<name>: {type: …}}` (OpenFOAM's
+/// functionObject). It writes `postProcessing/<name>/<startTime>/<name>.dat`: a `#` header,
+/// then one row per execution, time first. `writeControl: timeStep` with `writeInterval: N`
+/// (default 1) executes it every N steps; `runTime` every writeInterval seconds.
+template <int dim> class FunctionObject {
+public:
+    FunctionObject(const Dictionary& dict, std::string name);
+    virtual ~FunctionObject() = default;
+
+    const std::string& name() const { return name_; }
+
+    /// Open the output file (a restarted run opens a new <startTime> folder).
+    void open(const Case& cs, const Time& time);
+    /// Execute if the schedule says so.
+    void execute(const State<dim>& s, const Time& time);
+    /// Execute now (the initial state).
+    void executeNow(const State<dim>& s, const Time& time);
+
+    /// All function objects of controlDict.
+    static std::vector<std::unique_ptr<FunctionObject>> createAll(const Dictionary& controlDict);
+
+protected:
+    /// Column names after "time".
+    virtual std::vector<std::string> columns(const State<dim>& s) const = 0;
+    /// One row of values matching columns().
+    virtual std::vector<double> values(const State<dim>& s) const = 0;
+
+private:
+    std::string name_;
+    bool byTime_ = false;
+    double interval_ = 1;
+    long lastIndex_ = -1;
+    std::ofstream out_;
+    bool headerDone_ = false;
+    int precision_ = 6;
+};
+
+template <int dim> using FunctionObjectRegistry = Registry<FunctionObject<dim>, const std::string&>;
+
+} // namespace mpm

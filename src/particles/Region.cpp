@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "particles/Region.hpp"
+
+#include "core/Registry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+template <int dim> std::unique_ptr<Region<dim>> Region<dim>::create(const Dictionary& dict) {
+    return Registry<Region<dim>>::create(dict);
+}
+
+template class Region<2>;
+template class Region<3>;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+/// The dim numbers of `key` as a vector.
+template <int dim> Vec<dim> readVec(const Dictionary& dict, const std::string& key) {
+    const std::vector<double> v = dict.getVector(key, dim);
+    return Eigen::Map<const Vec<dim>>(v.data());
+}
+
+/// Axis-aligned box [min, max]: volume = prod_d (max_d - min_d).
+template <int dim> class BoxRegion : public Region<dim> {
+public:
+    explicit BoxRegion(const Dictionary& dict)
+        : box_(readVec<dim>(dict, "min"), readVec<dim>(dict, "max")) {
+        for (int d = 0; d < dim; ++d) {
+            if (!(box_.max()[d] > box_.min()[d])) {
+                dict.error("max", "every component of max must be greater than that of min");
+            }
+        }
+        dict.checkUnknownKeys();
+    }
+
+    bool contains(const Vec<dim>& x) const override { return box_.contains(x); }
+    Eigen::AlignedBox<double, dim> bounds() const override { return box_; }
+    double volume() const override { return box_.volume(); }
+
+private:
+    Eigen::AlignedBox<double, dim> box_;
+};
+
+/// Ball |x - c| <= r: volume = pi r^2 (disk, 2D) or 4/3 pi r^3 (sphere, 3D).
+/// `name` is the registered type; `sphere` is valid in 3D only, `disk` in 2D only.
+template <int dim> class BallRegion : public Region<dim> {
+public:
+    BallRegion(const Dictionary& dict, const std::string& name) {
+        if (name == "sphere" && dim != 3) dict.error("type", "'sphere' is 3D; use 'disk' in 2D");
+        if (name == "disk" && dim != 2) dict.error("type", "'disk' is 2D; use 'sphere' in 3D");
+        centre_ = readVec<dim>(dict, "centre");
+        radius_ = dict.getScalar("radius", Bounds::positive());
+        dict.checkUnknownKeys();
+    }
+
+    bool contains(const Vec<dim>& x) const override {
+        return (x - centre_).squaredNorm() <= radius_ * radius_;
+    }
+    Eigen::AlignedBox<double, dim> bounds() const override {
+        return {centre_.array() - radius_, centre_.array() + radius_};
+    }
+    double volume() const override {
+        return dim == 2 ? pi * radius_ * radius_ : 4.0 / 3.0 * pi * radius_ * radius_ * radius_;
+    }
+
+private:
+    Vec<dim> centre_;
+    double radius_ = 0.0;
+};
+
+template <int dim> class SphereRegion : public BallRegion<dim> {
+public:
+    explicit SphereRegion(const Dictionary& dict) : BallRegion<dim>(dict, "sphere") {}
+};
+
+template <int dim> class DiskRegion : public BallRegion<dim> {
+public:
+    explicit DiskRegion(const Dictionary& dict) : BallRegion<dim>(dict, "disk") {}
+};
+
+/// Solid circular cylinder of radius r around the segment p1 -> p2 (3D only), with flat end
+/// caps: contains x iff t = (x - p1).a / |a|^2 in [0, 1] and |x - p1 - t a| <= r, a = p2 - p1.
+/// Volume = pi r^2 |a|.
+template <int dim> class CylinderRegion : public Region<dim> {
+public:
+    explicit CylinderRegion(const Dictionary& dict) {
+        if constexpr (dim != 3) dict.error("type", "'cylinder' is 3D only; use box in 2D");
+        p1_ = readVec<dim>(dict, "p1");
+        p2_ = readVec<dim>(dict, "p2");
+        radius_ = dict.getScalar("radius", Bounds::positive());
+        if (!((p2_ - p1_).squaredNorm() > 0.0)) dict.error("p2", "p2 must differ from p1");
+        dict.checkUnknownKeys();
+    }
+
+    bool contains(const Vec<dim>& x) const override {
+        const Vec<dim> a = p2_ - p1_;
+        const Vec<dim> d = x - p1_;
+        const double t = d.dot(a) / a.squaredNorm();
+        return t >= 0.0 && t <= 1.0 && (d - t * a).squaredNorm() <= radius_ * radius_;
+    }
+
+    /// The end caps are disks normal to the unit axis n; a disk's half extent along axis d is
+    /// r sqrt(1 - n_d^2).
+    Eigen::AlignedBox<double, dim> bounds() const override {
+        const Vec<dim> n = (p2_ - p1_).normalized();
+        Vec<dim> e;
+        for (int d = 0; d < dim; ++d) e[d] = radius_ * std::sqrt(std::max(0.0, 1.0 - n[d] * n[d]));
+        return {p1_.cwiseMin(p2_) - e, p1_.cwiseMax(p2_) + e};
+    }
+    double volume() const override { return pi * radius_ * radius_ * (p2_ - p1_).norm(); }
+
+private:
+    Vec<dim> p1_;
+    Vec<dim> p2_;
+    double radius_ = 0.0;
+};
+
+/// Simple polygon (2D only) with vertices v_0 .. v_{n-1} in either orientation.
+/// contains: even-odd rule (a horizontal ray from x crosses the boundary an odd number of times).
+/// Volume (area) by the shoelace formula A = |sum_i (x_i y_{i+1} - x_{i+1} y_i)| / 2.
+template <int dim> class PolygonRegion : public Region<dim> {
+public:
+    explicit PolygonRegion(const Dictionary& dict) {
+        if constexpr (dim != 2) {
+            dict.error("type", "'polygon' is 2D only; use box, sphere or cylinder in 3D");
+        }
+        const std::vector<std::vector<double>> list = dict.vectorList("vertices", 2);
+        if (list.size() < 3) dict.error("vertices", "a polygon needs at least 3 vertices");
+        for (const auto& v : list) vertices_.emplace_back(v[0], v[1]);
+
+        Eigen::AlignedBox2d box;
+        for (const auto& v : vertices_) box.extend(v);
+        double twiceArea = 0.0;
+        for (std::size_t i = 0, j = vertices_.size() - 1; i < vertices_.size(); j = i++) {
+            twiceArea += vertices_[j].x() * vertices_[i].y() - vertices_[i].x() * vertices_[j].y();
+        }
+        area_ = 0.5 * std::abs(twiceArea);
+        // Relative to the bounding box, so that rounding in collinear vertices still counts as 0.
+        if (!(area_ > 1e-12 * box.sizes().prod())) {
+            dict.error("vertices", "the polygon has zero area");
+        }
+        for (int d = 0; d < 2; ++d) {
+            lo_[d] = box.min()[d];
+            hi_[d] = box.max()[d];
+        }
+        dict.checkUnknownKeys();
+    }
+
+    bool contains(const Vec<dim>& x) const override {
+        bool inside = false;
+        for (std::size_t i = 0, j = vertices_.size() - 1; i < vertices_.size(); j = i++) {
+            const Eigen::Vector2d& a = vertices_[i];
+            const Eigen::Vector2d& b = vertices_[j];
+            if ((a.y() > x[1]) != (b.y() > x[1])) {
+                const double xCross = a.x() + (x[1] - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+                if (x[0] < xCross) inside = !inside;
+            }
+        }
+        return inside;
+    }
+    Eigen::AlignedBox<double, dim> bounds() const override { return {lo_, hi_}; }
+    double volume() const override { return area_; }
+
+private:
+    std::vector<Eigen::Vector2d> vertices_;
+    Vec<dim> lo_ = Vec<dim>::Zero();
+    Vec<dim> hi_ = Vec<dim>::Zero();
+    double area_ = 0.0;
+};
+
+MPM_REGISTER(Registry<Region<2>>, BoxRegion<2>, "box");
+MPM_REGISTER(Registry<Region<3>>, BoxRegion<3>, "box");
+MPM_REGISTER(Registry<Region<2>>, SphereRegion<2>, "sphere");
+MPM_REGISTER(Registry<Region<3>>, SphereRegion<3>, "sphere");
+MPM_REGISTER(Registry<Region<2>>, DiskRegion<2>, "disk");
+MPM_REGISTER(Registry<Region<3>>, DiskRegion<3>, "disk");
+MPM_REGISTER(Registry<Region<2>>, CylinderRegion<2>, "cylinder");
+MPM_REGISTER(Registry<Region<3>>, CylinderRegion<3>, "cylinder");
+MPM_REGISTER(Registry<Region<2>>, PolygonRegion<2>, "polygon");
+MPM_REGISTER(Registry<Region<3>>, PolygonRegion<3>, "polygon");
+
+} // namespace
+} // namespace mpm

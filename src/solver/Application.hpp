@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Time.hpp"
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mpm {
+
+/// Command line, banner and error reporting shared by mpmFoam and the utilities
+/// (OpenFOAM's argList): `-case DIR`, `-help`, plus the program's own switches.
+class Application {
+public:
+    using Option = std::pair<std::string, std::string>; ///< switch, description
+
+    Application(int argc, char* argv[], std::string name, std::string summary,
+                std::vector<Option> switches);
+
+    const std::string& caseDir() const { return caseDir_; }
+    bool has(const std::string& option) const;
+
+    /// Print the banner and run `body`; returns the exit code: 0, or 1 after printing
+    /// `--> MPMFOAM FATAL (IO) ERROR:` for an InputError, RunError or other exception.
+    int run(const std::function<void()>& body) const;
+
+private:
+    void usage(std::ostream& os) const;
+    std::string name_, summary_, commandLine_, caseDir_ = ".";
+    std::vector<Option> switches_;
+    std::vector<std::string> given_;
+    bool help_ = false;
+    std::string badOption_;
+};
+
+/// Progress line per write: simulated time, Δt, steps per second and ETA.
+class ProgressMeter {
+public:
+    explicit ProgressMeter(const Time& time);
+    void print();
+
+private:
+    const Time& time_;
+    double wall0_, lastWall_;
+    long lastIndex_;
+};
+
+} // namespace mpm

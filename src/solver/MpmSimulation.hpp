@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Case.hpp"
+#include "case/Time.hpp"
+#include "grid/Grid.hpp"
+#include "io/PvdIndex.hpp"
+#include "materials/Material.hpp"
+#include "monitors/FunctionObject.hpp"
+#include "particles/BlockSort.hpp"
+#include "particles/Particles.hpp"
+#include "solver/Simulation.hpp"
+#include "transfers/Transfer.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace mpm {
+
+/// Wall time spent in each phase of the step [s].
+struct PhaseTimes {
+    double sort = 0, p2g = 0, grid = 0, g2p = 0, constitutive = 0, io = 0, functions = 0;
+};
+
+/// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of DESIGN §4.
+template <int dim> class MpmSimulation final : public Simulation {
+public:
+    MpmSimulation(const Case& cs, const RunOptions& options, const Dictionary& gridDict);
+
+    void start(Time& time) override;
+    double stableDeltaT() const override;
+    void step(double dt) override;
+    void executeFunctions() override;
+    void write() override;
+    void report(std::ostream& os) const override;
+    long numParticles() const override { return static_cast<long>(particles_.size()); }
+    int dimension() const override { return dim; }
+
+    const Particles<dim>& particles() const { return particles_; }
+    const Grid<dim>& grid() const { return grid_; }
+
+private:
+    // Phases of a step.
+    void sortParticles();
+    void particleToGrid();
+    void gridVelocity();
+    void updateStress(double dt);
+    void scatterInternalForce();
+    void gridUpdate(double dt);
+    void gridToParticle(double dt);
+
+    // Set-up.
+    void seed();
+    void restart(const std::string& timeDir);
+    void buildMaterialLists();
+    void checkDeltaT() const;
+    void applyBoundaryConditions(bool recordReactions, double dt);
+
+    // Failure handling: keep a recent good state and write it before stopping.
+    void snapshot();
+    [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
+    State<dim> state() const { return {particles_, grid_, materials_, gravity_, reactions_}; }
+
+    const Case& case_;
+    RunOptions options_;
+    Time* time_ = nullptr;
+
+    Grid<dim> grid_;
+    Vec<dim> gravity_ = Vec<dim>::Zero();
+    Particles<dim> particles_;
+    std::vector<std::unique_ptr<Material<dim>>> materials_;
+    std::vector<std::string> materialNames_;
+    std::vector<std::vector<Index>> materialParticles_;
+    std::unique_ptr<Transfer<dim>> transfer_;
+    BlockSort<dim> sort_;
+    bool usf_ = false;
+    std::vector<Index> activeBlocks_;
+    std::array<Vec<dim>, 2 * dim> reactions_;
+    std::vector<std::unique_ptr<FunctionObject<dim>>> functions_;
+    std::unique_ptr<io::PvdIndex> pvd_;
+
+    double maxSpeed_ = 0;
+    double maxWaveSpeed_ = 0;
+    double energyBudget_ = 0;
+    long steps_ = 0;
+    double stepWall_ = 0;
+    PhaseTimes times_;
+
+    Particles<dim> good_;
+    double goodTime_ = 0, goodDeltaT_ = 0;
+    long goodIndex_ = 0;
+    bool hasGood_ = false;
+};
+
+} // namespace mpm

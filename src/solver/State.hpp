@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "grid/Grid.hpp"
+#include "materials/Material.hpp"
+#include "particles/Particles.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace mpm {
+
+/// What function objects may read of a running simulation.
+template <int dim> struct State {
+    const Particles<dim>& particles;
+    const Grid<dim>& grid;
+    const std::vector<std::unique_ptr<Material<dim>>>& materials;
+    const Vec<dim>& gravity;
+    /// Force the material exerted on each grid face in the last step [N] (per metre in 2D).
+    const std::array<Vec<dim>, 2 * dim>& reactions;
+};
+
+} // namespace mpm

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Dictionary.hpp"
+#include "grid/Grid.hpp"
+#include "particles/BlockSort.hpp"
+#include "particles/Particles.hpp"
+
+#include <memory>
+#include <string>
+
+namespace mpm {
+
+/// What G2P saw: the largest particle speed, the kinetic energy, and the first particle whose
+/// velocity is not finite (-1 if none).
+struct GatherStats {
+    double maxSpeed = 0;
+    double kineticEnergy = 0;
+    Index firstNonFinite = -1;
+};
+
+/// Particle ↔ grid transfers for one kernel and one velocity scheme, chosen once at set-up
+/// (system/mpmSchemes `kernel`, `transfer`); each call is one phase over all particles.
+template <int dim> class Transfer {
+public:
+    virtual ~Transfer() = default;
+
+    /// Kernel weights and gradients of every particle, computed once per step and reused by
+    /// all transfers of the step.
+    virtual void computeWeights(const Particles<dim>& p, const Grid<dim>& g) = 0;
+
+    /// P2G of mass and momentum [000 Eq. 13] (APIC adds the affine term m_p C_p (x_i - x_p)).
+    /// With `withStress` the internal force f_i = -Σ V_p σ_p ∇w_ip is scattered in the same
+    /// pass (USL); otherwise it is left for scatterForce (USF).
+    virtual void scatter(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& s,
+                         bool withStress) = 0;
+    /// P2G of the internal force alone (USF's second scatter).
+    virtual void scatterForce(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& s) = 0;
+
+    /// L_p = Σ_i v_i ⊗ ∇w_ip from the P2G velocity g.vOld (USF) [002 Eq. 75].
+    virtual void velocityGradient(Particles<dim>& p, const Grid<dim>& g) = 0;
+
+    /// G2P: velocity by the FLIP/PIC blend [000 Eq. 15] or APIC [000 Eq. 17], position
+    /// [000 Eq. 16], and (with `withGradient`, USL) L_p from the updated velocity.
+    virtual GatherStats gather(Particles<dim>& p, const Grid<dim>& g, double dt, bool withGradient) = 0;
+
+    /// Build the transfer selected in system/mpmSchemes; `particleHalfWidth` is GIMP's l_p / h.
+    static std::unique_ptr<Transfer> create(const Dictionary& schemes, double particleHalfWidth);
+};
+
+} // namespace mpm
