@@ -106,6 +106,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
 
     const Dictionary schemes = cs.read("system/mpmSchemes");
     usf_ = schemes.getWordOr("stressUpdate", "USL", {"USF", "USL"}) == "USF";
+    damping_ = schemes.getScalarOr("damping", 0.0, Bounds::halfOpen(0.0, 1.0));
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
@@ -511,6 +512,8 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
     const auto& blocks = activeBlocks_;
     const IVec<dim> nodes = grid_.nodes();
     const Vec<dim> g = gravity_;
+    const double alpha = damping_;
+    const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < static_cast<Index>(blocks.size()); ++k) {
         const IVec<dim> c = grid_.blockCoord(blocks[k]);
@@ -526,8 +529,12 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
             if (m > 0) {
                 // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
                 const Vec<dim> v0 = grid_.momentum[node] / m;
+                Vec<dim> f = grid_.force[node] + m * g;
+                if (damped) // local non-viscous damping: f ← f - α |f| sign(v), per component
+                    for (int a = 0; a < dim; ++a)
+                        f[a] -= alpha * std::fabs(f[a]) * ((v0[a] > 0) - (v0[a] < 0));
                 grid_.vOld[node] = v0;
-                grid_.v[node] = v0 + dt * (grid_.force[node] / m + g);
+                grid_.v[node] = v0 + (dt / m) * f;
             }
             int d = 0;
             while (d < dim && ++i[d] >= hi[d]) i[d] = lo[d], ++d;

@@ -75,6 +75,7 @@ private:
     std::unique_ptr<Transfer<dim>> transfer_;
     BlockSort<dim> sort_;
     bool usf_ = false;
+    double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
     std::vector<Index> activeBlocks_;
     std::array<Vec<dim>, 2 * dim> reactions_;
     std::vector<std::unique_ptr<FunctionObject<dim>>> functions_;
