@@ -35,6 +35,7 @@ Time::Time(const Case& cs) : case_(cs), dict_(cs.read("system/controlDict")) {
     std::error_code ec;
     dictStamp_ = fs::last_write_time(controlDictPath(cs), ec);
     deltaT_ = fixedDeltaT_;
+    applyStopAt();
 }
 
 void Time::read(const Dictionary& d) {
@@ -72,7 +73,7 @@ void Time::read(const Dictionary& d) {
 
 void Time::setStart(double value, long index, double deltaT0) {
     value_ = startValue_ = value;
-    index_ = index;
+    index_ = startIndex_ = index;
     lastWrittenStep_ = index;
     lastWrittenValue_ = value;
     deltaT_ = deltaT0 > 0 ? deltaT0 : fixedDeltaT_;
@@ -137,28 +138,35 @@ void Time::pollRequests() {
         if (!ec && stamp != dictStamp_) {
             dictStamp_ = stamp;
             try {
-                const Dictionary d = case_.read("system/controlDict");
-                read(d);
-                dict_ = d;
+                // Parse into a fresh Time first, so that a broken file changes nothing.
+                const Time fresh(case_);
+                read(fresh.dict_);
+                dict_ = fresh.dict_;
                 log() << "Re-read system/controlDict\n";
                 if (!adjust_) deltaT_ = fixedDeltaT_;
+                applyStopAt();
             } catch (const InputError& e) {
                 warning() << "system/controlDict changed but cannot be read; keeping the "
                              "previous settings:\n    "
                           << e.what() << '\n';
             }
-            if (stopAt_ == StopAt::WriteNow) stopNow_ = stopWrite_ = true;
-            if (stopAt_ == StopAt::NoWriteNow) stopNow_ = true;
-            if (stopAt_ == StopAt::NextWrite) stopAtNextWrite_ = true;
         }
     }
+}
+
+void Time::applyStopAt() {
+    if (stopAt_ == StopAt::WriteNow) stopNow_ = stopWrite_ = true;
+    if (stopAt_ == StopAt::NoWriteNow) stopNow_ = true;
+    if (stopAt_ == StopAt::NextWrite) stopAtNextWrite_ = true;
 }
 
 bool Time::run() {
     pollRequests();
     if (stopNow_) return false;
     const double tol = adjust_ ? 1e-9 * deltaT_ : 0.5 * fixedDeltaT_;
-    return value_ < endTime_ - tol;
+    if (value_ < endTime_ - tol) return true;
+    stopWrite_ = true; // endTime reached (or lowered below the current time): write the end
+    return false;
 }
 
 void Time::advance(double stableDeltaT) {

@@ -63,6 +63,7 @@ public:
 private:
     void read(const Dictionary& d);
     void pollRequests();
+    void applyStopAt();
     long writeIndexOf(double t) const;
 
     const Case& case_;
@@ -86,7 +87,7 @@ private:
     bool allowUnstable_ = false;
 
     double value_ = 0, deltaT_ = 0, deltaT0_ = 0, startValue_ = 0;
-    long index_ = 0;
+    long index_ = 0, startIndex_ = 0;
     long lastWriteIndex_ = 0;
     bool writeTime_ = false;
     bool stopNow_ = false;

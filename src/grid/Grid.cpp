@@ -2,6 +2,7 @@
 #include "grid/Grid.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace mpm {
 
@@ -50,9 +51,12 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
         const double cells = extent / h_;
         const double rounded = std::round(cells);
         if (rounded < 1 || std::fabs(cells - rounded) > 1e-6 * std::max(1.0, cells))
-            dict.error("cellSize", "the box extent " + std::to_string(extent) +
-                                       " is not a whole number of cells of size " +
-                                       std::to_string(h_));
+        {
+            std::ostringstream os;
+            os << "the box extent " << extent << " m along " << "xyz"[d]
+               << " is not a whole number of cells of size " << h_ << " m";
+            dict.error("cellSize", os.str());
+        }
         if (rounded > 1e5) dict.error("cellSize", "more than 100000 cells in one direction");
         n_[d] = static_cast<int>(rounded) + 1 + 2 * Pad;
         nb_[d] = (n_[d] + BlockSize - 1) / BlockSize;
@@ -69,8 +73,8 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
     if (numNodes_ > Index(400) * 1000 * 1000)
         dict.error("cellSize", "the grid would have more than 4e8 nodes");
 
-    const Dictionary boundary = dict.isDict("boundary") ? dict.subDict("boundary")
-                                                        : Dictionary::fromString("{}", dict.fileName());
+    const Dictionary boundary = dict.has("boundary") ? dict.subDict("boundary")
+                                                     : Dictionary::fromString("{}", dict.fileName());
     for (int f = 0; f < NumFaces; ++f) faces_[f] = readFace(boundary, faceName(f));
     boundary.checkUnknownKeys();
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/HenckyElastic.hpp"
 
+#include "core/FastMath.hpp"
 #include "core/SymmetricEigen.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mpm {
@@ -55,17 +57,40 @@ void HenckyElastic<dim>::initialise(Particles<dim>& p, Index i, const Mat3& sigm
 template <int dim>
 Index HenckyElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Index>& ids,
                                        double dt) const {
+    // Particles go through in batches of Lanes so that the eigen-decompositions vectorise
+    // across particles (DESIGN §7); the last batch is padded with copies of its first particle.
+    constexpr int Lanes = 8;
     const Index n = static_cast<Index>(ids.size());
+    const Index batches = (n + Lanes - 1) / Lanes;
+    const double lambda = c_.lambda, twoG = 2.0 * c_.G;
     Index bad = n;
 #pragma omp parallel for schedule(static) reduction(min : bad)
-    for (Index k = 0; k < n; ++k) {
-        const Index i = ids[k];
-        const Mat3 f = Mat3::Identity() + dt * embed3<dim>(p.L[i]);
-        const Mat3 be = f * p.be[i] * f.transpose();
-        p.be[i] = be;
-        p.stress[i] = kirchhoff(c_, be) / p.F[i].determinant();
-
-        if (!std::isfinite(p.stress[i].sum())) bad = std::min(bad, k);
+    for (Index b = 0; b < batches; ++b) {
+        Mat3 be[Lanes], Q[Lanes];
+        Vec3 lam[Lanes];
+        Index idx[Lanes];
+        for (int l = 0; l < Lanes; ++l) {
+            const Index k = std::min(b * Lanes + l, n - 1);
+            idx[l] = ids[k];
+            const Mat3 f = Mat3::Identity() + dt * embed3<dim>(p.L[idx[l]]);
+            be[l] = f * p.be[idx[l]] * f.transpose();
+        }
+        symmetricEigen3Batch<Lanes>(be, lam, Q);
+        // ε = ½ ln bᵉ in principal axes, vectorised across the batch.
+        double eps[3][Lanes];
+#pragma omp simd
+        for (int l = 0; l < Lanes; ++l)
+            for (int a = 0; a < 3; ++a) eps[a][l] = 0.5 * fastLog(lam[l][a]);
+        for (int l = 0; l < Lanes; ++l) {
+            if (b * Lanes + l >= n) break;
+            const Index i = idx[l];
+            // τ = λ tr(ε) 1 + 2G ε [000 Eq. 4–5]; σ = τ/J with J = V/V⁰.
+            const Vec3 e(eps[0][l], eps[1][l], eps[2][l]);
+            const Vec3 tau = (lambda * e.sum()) * Vec3::Ones() + twoG * e;
+            p.be[i] = be[l];
+            p.stress[i] = fromEigen(Q[l], tau * (p.volume0[i] / p.volume[i]));
+            if (!std::isfinite(p.stress[i].sum())) bad = std::min(bad, b * Lanes + l);
+        }
     }
     return bad < n ? ids[bad] : -1;
 }

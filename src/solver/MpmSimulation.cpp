@@ -161,8 +161,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     energyBudget_ = 10.0 * (kinetic + strain + mass * extent);
     if (energyBudget_ <= 0) energyBudget_ = 1e300;
 
-    if (!options_.noFunctionObjects && !options_.dryRun)
-        functions_ = FunctionObject<dim>::createAll(time.dict());
+    if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
     (void)s;
 
     snapshot();
@@ -190,12 +189,26 @@ template <int dim> void MpmSimulation<dim>::seed() {
                                       "'; constant/materials defines: " + valid);
         }
         const auto region = Region<dim>::create(set.subDict("region"));
+        {
+            // Check before seeding: a region far larger than the grid would seed without bound.
+            const auto box = region->bounds();
+            const double tol = 1e-9 * grid_.h();
+            for (int d = 0; d < dim; ++d)
+                if (box.min()[d] < grid_.lo()[d] - tol || box.max()[d] > grid_.hi()[d] + tol) {
+                    std::ostringstream os;
+                    os << "the region extends outside the grid bounds ([" << box.min().transpose()
+                       << "] – [" << box.max().transpose() << "] is not inside ["
+                       << grid_.lo().transpose() << "] – [" << grid_.hi().transpose()
+                       << "] of constant/grid)";
+                    set.error("region", os.str());
+                }
+        }
 
         std::string method = "regular";
         int perDirection = 2;
         int perCell = dim == 2 ? 4 : 8;
         long rngSeed = 0;
-        if (set.isDict("seeding")) {
+        if (set.has("seeding")) {
             const Dictionary sd = set.subDict("seeding");
             method = sd.getWordOr("method", "regular", {"regular", "poissonDisk"});
             if (method == "regular")
@@ -368,11 +381,11 @@ template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
     std::ostringstream os;
     os << "deltaT = " << time_->fixedDeltaT() << " s exceeds the stable limit h/(c + |v|max) = "
        << critical << " s (h = " << grid_.h() << " m, c = " << maxWaveSpeed_
-       << " m/s, |v|max = " << maxSpeed_
-       << " m/s); reduce deltaT, set adjustTimeStep: yes, or set allowUnstableDeltaT: yes to "
-          "run anyway";
-    if (!time_->allowUnstableDeltaT()) time_->dict().error("deltaT", os.str());
-    warning() << os.str() << '\n';
+       << " m/s, |v|max = " << maxSpeed_ << " m/s)";
+    if (!time_->allowUnstableDeltaT())
+        time_->dict().error("deltaT", os.str() + "; reduce deltaT, set adjustTimeStep: yes, or "
+                                                 "set allowUnstableDeltaT: yes to run anyway");
+    warning() << os.str() << "; running anyway (allowUnstableDeltaT: yes)\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -399,6 +412,13 @@ template <int dim> void MpmSimulation<dim>::sortParticles() {
     ScopedTimer timer(times_.sort);
     const Index outside = sort_.update(particles_, grid_);
     if (outside >= 0) fail("sort", outside, "left the grid");
+    // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
+    // steps) store the particles in block order, for locality in P2G and G2P.
+    if (time_->index() % ReorderInterval == 0) {
+        particles_.permute(sort_.order());
+        sort_.update(particles_, grid_);
+        buildMaterialLists();
+    }
     transfer_->computeWeights(particles_, grid_);
 }
 

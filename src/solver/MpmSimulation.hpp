@@ -41,6 +41,8 @@ public:
     const Grid<dim>& grid() const { return grid_; }
 
 private:
+    static constexpr long ReorderInterval = 20;
+
     // Phases of a step.
     void sortParticles();
     void particleToGrid();

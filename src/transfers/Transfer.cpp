@@ -10,12 +10,9 @@ namespace mpm {
 
 namespace {
 
-constexpr int ipow(int b, int e) { return e == 0 ? 1 : b * ipow(b, e - 1); }
-
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
 template <int dim, class K, bool Affine> class TransferImpl final : public Transfer<dim> {
     static constexpr int W = K::Width;
-    static constexpr int S = ipow(W, dim);
 
     /// Kernel data of one particle: first stencil node, 1D weights and derivatives per axis,
     /// and the particle's offset from the first node in cell units.
@@ -30,7 +27,7 @@ public:
     TransferImpl(K kernel, double ratio) : kernel_(kernel), ratio_(ratio) {}
 
     void computeWeights(const Particles<dim>& p, const Grid<dim>& g) override {
-        if (offsets_.empty()) buildOffsets(g);
+        if (!strided_) buildOffsets(g);
         const Index n = static_cast<Index>(p.size());
         st_.resize(n);
         const Vec<dim> origin = g.origin();
@@ -68,12 +65,9 @@ public:
         for (Index i = 0; i < n; ++i) {
             const Stencil& s = st_[i];
             Mat<dim> L = Mat<dim>::Zero();
-            for (int k = 0; k < S; ++k) {
-                double wgt;
-                Vec<dim> grad;
-                weightAndGradient(s, k, wgt, grad);
-                L.noalias() += g.vOld[s.node0 + offsets_[k]] * grad.transpose();
-            }
+            forStencil(s, [&](Index node, double, const Vec<dim>& grad, const Vec<dim>&) {
+                L.noalias() += g.vOld[node] * grad.transpose();
+            });
             p.L[i] = L * invH;
         }
     }
@@ -88,38 +82,115 @@ public:
 
 private:
     void buildOffsets(const Grid<dim>& g) {
-        offsets_.resize(S);
-        for (int k = 0; k < S; ++k) {
-            int r = k;
-            Index off = 0;
-            for (int d = 0; d < dim; ++d) {
-                ko_[k][d] = r % W;
-                r /= W;
-                off += ko_[k][d] * g.stride(d);
+        sy_ = g.stride(1);
+        sz_ = dim == 3 ? g.stride(dim - 1) : 0;
+        strided_ = true;
+    }
+
+    /// 3D P2G of one particle with the sums factored per x-row of the stencil: with
+    /// w = w_x w_yz and ∇w·h = (w'_x w_yz, w_x w'_y w_z, w_x w_y w'_z), the affine momentum
+    /// m v + m C h (x_i - x_p)/h and the force -V σ ∇w are linear in the row's x offset a.
+    template <bool Momentum, bool Stress>
+    inline void scatter3(const Stencil& s, Grid<dim>& g, double m, const Vec<dim>& mv,
+                         const Mat<dim>& mC, const Mat<dim>& S) const {
+        for (int c = 0; c < W; ++c) {
+            const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+            for (int b = 0; b < W; ++b) {
+                const Index row = s.node0 + b * sy_ + c * sz_;
+                const double wyz = s.w[1][b] * wz;
+                const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
+                const double oy = b - s.fx[1];
+                // momentum(a) = mv + mC (a - fx, oy, oz) = p0 + a mC.col(0)
+                Vec<dim> p0 = mv;
+                if constexpr (Affine) p0 += mC * Vec<dim>(-s.fx[0], oy, oz);
+                // force(a) = S (w'_x(a) wyz, w_x(a) dyz, w_x(a) wdz) = w'_x(a) u + w_x(a) v
+                const Vec<dim> u = wyz * S.col(0);
+                const Vec<dim> v = dyz * S.col(1) + wdz * S.col(2);
+                for (int a = 0; a < W; ++a) {
+                    const Index node = row + a;
+                    const double wx = s.w[0][a];
+                    if constexpr (Momentum) {
+                        const double wgt = wx * wyz;
+                        g.mass[node] += wgt * m;
+                        if constexpr (Affine)
+                            g.momentum[node] += wgt * (p0 + double(a) * mC.col(0));
+                        else
+                            g.momentum[node] += wgt * p0;
+                    }
+                    if constexpr (Stress) g.force[node] += s.dw[0][a] * u + wx * v;
+                }
             }
-            offsets_[k] = off;
         }
     }
 
-    /// Weight w_ip and gradient in cell units (∇w · h) of stencil point k.
-    inline void weightAndGradient(const Stencil& s, int k, double& wgt, Vec<dim>& grad) const {
+    /// 3D G2P of one particle, the stencil sums factored per x-row like scatter3:
+    /// r0 = Σ_a w_x v_i, r1 = Σ_a a w_x v_i, r2 = Σ_a w'_x v_i.
+    template <bool Grad, bool Flip>
+    inline void gather3(const Stencil& s, const Grid<dim>& g, Vec<dim>& vPic, Vec<dim>& dv,
+                        Mat<dim>& B, Mat<dim>& L) const {
+        Vec<dim> b0 = Vec<dim>::Zero(), b1 = Vec<dim>::Zero(), b2 = Vec<dim>::Zero();
+        for (int c = 0; c < W; ++c) {
+            const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+            for (int b = 0; b < W; ++b) {
+                const Index row = s.node0 + b * sy_ + c * sz_;
+                const double wyz = s.w[1][b] * wz;
+                const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
+                const double oy = b - s.fx[1];
+                Vec<dim> r0 = Vec<dim>::Zero(), r1 = Vec<dim>::Zero(), r2 = Vec<dim>::Zero();
+                for (int a = 0; a < W; ++a) {
+                    const Vec<dim>& vi = g.v[row + a];
+                    r0 += s.w[0][a] * vi;
+                    if constexpr (Affine) r1 += (a * s.w[0][a]) * vi;
+                    if constexpr (Grad) r2 += s.dw[0][a] * vi;
+                    if constexpr (Flip) dv += (s.w[0][a] * wyz) * (vi - g.vOld[row + a]);
+                }
+                vPic += wyz * r0;
+                if constexpr (Affine) {
+                    b0 += wyz * r1;
+                    b1 += (wyz * oy) * r0;
+                    b2 += (wyz * oz) * r0;
+                }
+                if constexpr (Grad) {
+                    L.col(0) += wyz * r2;
+                    L.col(1) += dyz * r0;
+                    L.col(2) += wdz * r0;
+                }
+            }
+        }
+        if constexpr (Affine) {
+            // B = Σ w v_i (x_i - x_p)ᵀ/h: column 0 is Σ w v_i (a - fx).
+            B.col(0) = b0 - s.fx[0] * vPic;
+            B.col(1) = b1;
+            B.col(2) = b2;
+        }
+    }
+
+    /// Visit the stencil of one particle as nested loops (x fastest):
+    /// fn(node, w_ip, ∇w_ip·h, (x_i - x_p)/h).
+    template <class Fn> inline void forStencil(const Stencil& s, Fn&& fn) const {
         if constexpr (dim == 2) {
-            const int a = ko_[k][0], b = ko_[k][1];
-            wgt = s.w[0][a] * s.w[1][b];
-            grad = Vec<dim>(s.dw[0][a] * s.w[1][b], s.w[0][a] * s.dw[1][b]);
+            for (int b = 0; b < W; ++b) {
+                const Index row = s.node0 + b * sy_;
+                const double wy = s.w[1][b], dy = s.dw[1][b], oy = b - s.fx[1];
+                for (int a = 0; a < W; ++a)
+                    fn(row + a, s.w[0][a] * wy, Vec<dim>(s.dw[0][a] * wy, s.w[0][a] * dy),
+                       Vec<dim>(a - s.fx[0], oy));
+            }
         } else {
-            const int a = ko_[k][0], b = ko_[k][1], c = ko_[k][2];
-            const double wyz = s.w[1][b] * s.w[2][c];
-            wgt = s.w[0][a] * wyz;
-            grad = Vec<dim>(s.dw[0][a] * wyz, s.w[0][a] * s.dw[1][b] * s.w[2][c],
-                            s.w[0][a] * s.w[1][b] * s.dw[2][c]);
+            for (int c = 0; c < W; ++c) {
+                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+                for (int b = 0; b < W; ++b) {
+                    const Index row = s.node0 + b * sy_ + c * sz_;
+                    const double wyz = s.w[1][b] * wz, dyz = s.dw[1][b] * wz;
+                    const double wdz = s.w[1][b] * dz, oy = b - s.fx[1];
+                    for (int a = 0; a < W; ++a) {
+                        const double wx = s.w[0][a];
+                        fn(row + a, wx * wyz, Vec<dim>(s.dw[0][a] * wyz, wx * dyz, wx * wdz),
+                           Vec<dim>(a - s.fx[0], oy, oz));
+                    }
+                }
+            }
         }
-    }
-
-    inline Vec<dim> nodeOffset(const Stencil& s, int k) const {
-        Vec<dim> o;
-        for (int d = 0; d < dim; ++d) o[d] = ko_[k][d] - s.fx[d];
-        return o;
     }
 
     template <bool Momentum, bool Stress>
@@ -144,19 +215,20 @@ private:
                     if constexpr (Stress)
                         stressTerm = (-p.volume[i] * invH) *
                                      p.stress[i].template topLeftCorner<dim, dim>();
-                    for (int k = 0; k < S; ++k) {
-                        double wgt;
-                        Vec<dim> grad;
-                        weightAndGradient(s, k, wgt, grad);
-                        const Index node = s.node0 + offsets_[k];
-                        if constexpr (Momentum) {
-                            g.mass[node] += wgt * m;
-                            if constexpr (Affine)
-                                g.momentum[node] += wgt * (mv + mC * nodeOffset(s, k));
-                            else
-                                g.momentum[node] += wgt * mv;
-                        }
-                        if constexpr (Stress) g.force[node] += stressTerm * grad;
+                    if constexpr (dim == 3) {
+                        scatter3<Momentum, Stress>(s, g, m, mv, mC, stressTerm);
+                    } else {
+                        forStencil(s, [&](Index node, double wgt, const Vec<dim>& grad,
+                                          const Vec<dim>& offset) {
+                            if constexpr (Momentum) {
+                                g.mass[node] += wgt * m;
+                                if constexpr (Affine)
+                                    g.momentum[node] += wgt * (mv + mC * offset);
+                                else
+                                    g.momentum[node] += wgt * mv;
+                            }
+                            if constexpr (Stress) g.force[node] += stressTerm * grad;
+                        });
                     }
                 }
             }
@@ -178,16 +250,17 @@ private:
             Vec<dim> dv = Vec<dim>::Zero();
             Mat<dim> B = Mat<dim>::Zero();
             Mat<dim> L = Mat<dim>::Zero();
-            for (int k = 0; k < S; ++k) {
-                double wgt;
-                Vec<dim> grad;
-                weightAndGradient(s, k, wgt, grad);
-                const Index node = s.node0 + offsets_[k];
-                const Vec<dim>& vi = g.v[node];
-                vPic += wgt * vi;
-                if constexpr (Flip) dv += wgt * (vi - g.vOld[node]);
-                if constexpr (Affine) B.noalias() += (wgt * vi) * nodeOffset(s, k).transpose();
-                if constexpr (Grad) L.noalias() += vi * grad.transpose();
+            if constexpr (dim == 3) {
+                gather3<Grad, Flip>(s, g, vPic, dv, B, L);
+            } else {
+                forStencil(s, [&](Index node, double wgt, const Vec<dim>& grad,
+                                  const Vec<dim>& offset) {
+                    const Vec<dim>& vi = g.v[node];
+                    vPic += wgt * vi;
+                    if constexpr (Flip) dv += wgt * (vi - g.vOld[node]);
+                    if constexpr (Affine) B.noalias() += (wgt * vi) * offset.transpose();
+                    if constexpr (Grad) L.noalias() += vi * grad.transpose();
+                });
             }
             if constexpr (Affine) {
                 p.v[i] = vPic;
@@ -214,8 +287,8 @@ private:
     K kernel_;
     double ratio_;
     std::vector<Stencil> st_;
-    std::vector<Index> offsets_;
-    int ko_[S][dim] = {};
+    Index sy_ = 0, sz_ = 0;
+    bool strided_ = false;
 };
 
 /// APIC needs a kernel with constant inertia D_p (quadratic or cubic B-spline).

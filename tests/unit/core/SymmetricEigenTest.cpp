@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Property tests of the Jacobi eigen-decomposition of symmetric 3×3 matrices.
+#include "core/SymmetricEigen.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <random>
+
+namespace mpm {
+namespace {
+
+/// A random rotation (from a normalised Gaussian quaternion: uniform on SO(3)).
+Mat3 randomRotation(std::mt19937_64& rng) {
+    std::normal_distribution<double> n(0.0, 1.0);
+    const Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+    return q.normalized().toRotationMatrix();
+}
+
+Mat3 randomSymmetric(std::mt19937_64& rng, double scale) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Mat3 a;
+    for (int i = 0; i < 9; ++i) a(i) = scale * u(rng);
+    return 0.5 * (a + a.transpose());
+}
+
+/// Decompose A and check Q orthogonal, A = Q diag(λ) Qᵀ, and (if given) the sorted eigenvalues.
+void checkDecomposition(const Mat3& A, const Vec3* expected = nullptr) {
+    Vec3 lambda;
+    Mat3 Q;
+    symmetricEigen3(A, lambda, Q);
+    const double orth = (Q.transpose() * Q - Mat3::Identity()).cwiseAbs().maxCoeff();
+    EXPECT_LE(orth, 1e-14) << "A =\n" << A;
+    const double norm = std::max(A.norm(), 1e-300);
+    const double err = (fromEigen(Q, lambda) - A).norm();
+    EXPECT_LE(err, 1e-13 * norm) << "A =\n" << A;
+    // Each column of Q is an eigenvector.
+    for (int k = 0; k < 3; ++k)
+        EXPECT_LE((A * Q.col(k) - lambda[k] * Q.col(k)).norm(), 1e-13 * norm) << "A =\n" << A;
+    if (expected) {
+        std::array<double, 3> got{lambda[0], lambda[1], lambda[2]};
+        std::array<double, 3> want{(*expected)[0], (*expected)[1], (*expected)[2]};
+        std::sort(got.begin(), got.end());
+        std::sort(want.begin(), want.end());
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(got[k], want[k], 1e-13 * std::max(1.0, std::fabs(want[k])))
+                << "A =\n" << A;
+    }
+}
+
+TEST(SymmetricEigen, RandomSymmetricMatrices) {
+    std::mt19937_64 rng(42);
+    for (int trial = 0; trial < 2000; ++trial) {
+        SCOPED_TRACE(trial);
+        const double scale = std::pow(10.0, trial % 7 - 3); // 1e-3 … 1e3
+        checkDecomposition(randomSymmetric(rng, scale));
+    }
+}
+
+TEST(SymmetricEigen, KnownSpectrumUnderRandomRotation) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    for (int trial = 0; trial < 500; ++trial) {
+        const Vec3 lam(u(rng), u(rng), u(rng));
+        const Mat3 R = randomRotation(rng);
+        Mat3 A = R * lam.asDiagonal() * R.transpose();
+        A = 0.5 * (A + A.transpose());
+        checkDecomposition(A, &lam);
+    }
+}
+
+TEST(SymmetricEigen, Identity) {
+    const Vec3 ones = Vec3::Ones();
+    checkDecomposition(Mat3::Identity(), &ones);
+    Vec3 lambda;
+    Mat3 Q;
+    symmetricEigen3(Mat3::Identity(), lambda, Q);
+    EXPECT_EQ(Q, Mat3::Identity()); // nothing to rotate
+}
+
+TEST(SymmetricEigen, RepeatedEigenvalues) {
+    const Vec3 d(1.0, 1.0, 2.0);
+    checkDecomposition(Mat3(d.asDiagonal()), &d);
+    std::mt19937_64 rng(3);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Mat3 R = randomRotation(rng);
+        Mat3 A = R * d.asDiagonal() * R.transpose();
+        A = 0.5 * (A + A.transpose());
+        checkDecomposition(A, &d);
+        // Nearly repeated (1 + 1e-12) and triple with noise.
+        const Vec3 near(1.0, 1.0 + 1e-12, 2.0);
+        Mat3 B = R * near.asDiagonal() * R.transpose();
+        B = 0.5 * (B + B.transpose());
+        checkDecomposition(B, &near);
+        const Vec3 triple(5.0, 5.0, 5.0);
+        Mat3 T = R * triple.asDiagonal() * R.transpose();
+        T = 0.5 * (T + T.transpose());
+        checkDecomposition(T, &triple);
+    }
+}
+
+TEST(SymmetricEigen, TinyOffDiagonals) {
+    for (double eps : {1e-8, 1e-14, 1e-20, 1e-200, 1e-310}) {
+        SCOPED_TRACE(eps);
+        Mat3 A;
+        A << 1.0, eps, -eps, eps, 2.0, eps, -eps, eps, 3.0;
+        checkDecomposition(A);
+        // Tiny off-diagonals on a repeated eigenvalue.
+        A << 1.0, eps, eps, eps, 1.0, eps, eps, eps, 1.0;
+        checkDecomposition(A);
+    }
+}
+
+TEST(SymmetricEigen, ZeroAndWideRange) {
+    const Vec3 zero = Vec3::Zero();
+    checkDecomposition(Mat3::Zero(), &zero);
+    std::mt19937_64 rng(5);
+    for (int trial = 0; trial < 100; ++trial) {
+        // Eigenvalues spanning 16 decades (e.g. bᵉ of a nearly crushed particle): the
+        // reconstruction is checked relative to the largest.
+        const Vec3 lam(1e8, 1.0, -1e-8);
+        const Mat3 R = randomRotation(rng);
+        Mat3 A = R * lam.asDiagonal() * R.transpose();
+        A = 0.5 * (A + A.transpose());
+        checkDecomposition(A);
+    }
+}
+
+} // namespace
+} // namespace mpm

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Grid layout, face node lists, input errors, and the block colouring of P2G.
+#include "grid/Grid.hpp"
+#include "particles/BlockSort.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace mpm {
+namespace {
+
+Dictionary parse(const std::string& text) { return Dictionary::fromString(text, "constant/grid"); }
+
+InputError catchInputError(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "expected an InputError";
+    return InputError("", -1, "", "no error");
+}
+
+/// Integer coordinates of node k (x fastest).
+template <int dim> IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
+    IVec<dim> c;
+    for (int d = 0; d < dim; ++d) {
+        c[d] = static_cast<int>(k % g.nodes()[d]);
+        k /= g.nodes()[d];
+    }
+    return c;
+}
+
+TEST(Grid, NodeCountsAndOriginWithPadding2D) {
+    const Grid<2> g(parse("bounds: {min: [0, -1], max: [1, 1]}\ncellSize: 0.25\n"));
+    constexpr int P = Grid<2>::Pad;
+    EXPECT_DOUBLE_EQ(g.h(), 0.25);
+    EXPECT_DOUBLE_EQ(g.invH(), 4.0);
+    EXPECT_EQ(g.nodes()[0], 4 + 1 + 2 * P);
+    EXPECT_EQ(g.nodes()[1], 8 + 1 + 2 * P);
+    EXPECT_EQ(g.numNodes(), Index(g.nodes()[0]) * g.nodes()[1]);
+    EXPECT_DOUBLE_EQ(g.origin()[0], -P * 0.25);
+    EXPECT_DOUBLE_EQ(g.origin()[1], -1.0 - P * 0.25);
+    EXPECT_DOUBLE_EQ(g.hi()[0], 1.0);
+    EXPECT_DOUBLE_EQ(g.hi()[1], 1.0);
+    EXPECT_EQ(g.stride(0), 1);
+    EXPECT_EQ(g.stride(1), g.nodes()[0]);
+    // Box corners are nodes Pad and n - 1 - Pad.
+    EXPECT_TRUE(g.nodePosition(IVec<2>(P, P)).isApprox(g.lo()));
+    EXPECT_TRUE(
+        g.nodePosition(IVec<2>(g.nodes()[0] - 1 - P, g.nodes()[1] - 1 - P)).isApprox(g.hi()));
+    EXPECT_EQ(g.blocks()[0], (g.nodes()[0] + 3) / 4);
+    EXPECT_EQ(g.blocks()[1], (g.nodes()[1] + 3) / 4);
+    EXPECT_EQ(g.numBlocks(), Index(g.blocks()[0]) * g.blocks()[1]);
+    EXPECT_EQ(g.mass.size(), static_cast<std::size_t>(g.numNodes()));
+    EXPECT_EQ(g.v.size(), static_cast<std::size_t>(g.numNodes()));
+    for (Index k = 0; k < g.numNodes(); ++k) ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
+}
+
+TEST(Grid, NodeCountsAndOriginWithPadding3D) {
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [0.5, 1, 1.5]}\ncellSize: 0.1\n"));
+    constexpr int P = Grid<3>::Pad;
+    EXPECT_EQ(g.nodes()[0], 5 + 1 + 2 * P);
+    EXPECT_EQ(g.nodes()[1], 10 + 1 + 2 * P);
+    EXPECT_EQ(g.nodes()[2], 15 + 1 + 2 * P);
+    EXPECT_EQ(g.stride(2), Index(g.nodes()[0]) * g.nodes()[1]);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(g.origin()[d], -P * 0.1, 1e-15);
+    EXPECT_NEAR(g.hi()[2], 1.5, 1e-15);
+    for (Index k = 0; k < g.numNodes(); ++k) ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
+}
+
+TEST(Grid, BlockOfAndBlockCoordAgree) {
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\ncellSize: 0.125\n"));
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(1.0, g.nodes()[0] - 3.0);
+    for (int t = 0; t < 1000; ++t) {
+        const Vec<3> xh(u(rng), u(rng), u(rng));
+        const IVec<3> c = g.blockCoord(g.blockOf(xh));
+        for (int d = 0; d < 3; ++d)
+            ASSERT_EQ(c[d], static_cast<int>(std::floor(xh[d])) / Grid<3>::BlockSize);
+    }
+}
+
+TEST(Grid, InsideArrays) {
+    const Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\n"));
+    const double n = g.nodes()[0];
+    EXPECT_TRUE(g.insideArrays(Vec<2>(1.0, 1.0)));
+    EXPECT_FALSE(g.insideArrays(Vec<2>(0.999, 2.0)));
+    EXPECT_FALSE(g.insideArrays(Vec<2>(2.0, n - 3.0)));
+    EXPECT_TRUE(g.insideArrays(Vec<2>(2.0, std::nextafter(n - 3.0, 0.0))));
+    // Every point of the box (with a cell of margin) is inside.
+    const Vec<2> lo = (g.lo() - g.origin()) * g.invH();
+    const Vec<2> hi = (g.hi() - g.origin()) * g.invH();
+    EXPECT_TRUE(g.insideArrays(lo - Vec<2>::Constant(1.0)));
+    EXPECT_TRUE(g.insideArrays(hi + Vec<2>::Constant(0.999)));
+}
+
+TEST(Grid, FaceNodeLists) {
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 0.5, 0.75]}\ncellSize: 0.25\n"));
+    constexpr int P = Grid<3>::Pad;
+    for (int f = 0; f < Grid<3>::NumFaces; ++f) {
+        SCOPED_TRACE(Grid<3>::faceName(f));
+        const int axis = f / 2;
+        const auto& list = g.faceNodes(f);
+        Index expected = (P + 1);
+        for (int d = 0; d < 3; ++d)
+            if (d != axis) expected *= g.nodes()[d];
+        EXPECT_EQ(static_cast<Index>(list.size()), expected);
+        std::set<Index> unique(list.begin(), list.end());
+        EXPECT_EQ(unique.size(), list.size());
+        const double faceCoord = f % 2 == 0 ? g.lo()[axis] : g.hi()[axis];
+        for (Index k : list) {
+            const Vec<3> x = g.nodePosition(nodeCoord(g, k));
+            if (f % 2 == 0)
+                ASSERT_LE(x[axis], faceCoord + 1e-12);
+            else
+                ASSERT_GE(x[axis], faceCoord - 1e-12);
+        }
+        // And no node on or beyond the face is missing.
+        Index onOrBeyond = 0;
+        for (Index k = 0; k < g.numNodes(); ++k) {
+            const double x = g.nodePosition(nodeCoord(g, k))[axis];
+            if (f % 2 == 0 ? x <= faceCoord + 1e-12 : x >= faceCoord - 1e-12) ++onOrBeyond;
+        }
+        EXPECT_EQ(onOrBeyond, expected);
+    }
+    EXPECT_EQ(Grid<3>::faceName(0), "xMin");
+    EXPECT_EQ(Grid<3>::faceName(5), "zMax");
+}
+
+TEST(Grid, FaceConditions) {
+    const Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.5\n"
+                          "boundary:\n  xMin: noSlip\n  xMax: open\n"
+                          "  yMin: {type: friction, friction: 0.3}\n"));
+    using K = FaceCondition::Kind;
+    EXPECT_EQ(g.faces()[0].kind, K::NoSlip);
+    EXPECT_EQ(g.faces()[1].kind, K::Open);
+    EXPECT_EQ(g.faces()[2].kind, K::Friction);
+    EXPECT_DOUBLE_EQ(g.faces()[2].friction, 0.3);
+    EXPECT_EQ(g.faces()[3].kind, K::Slip); // default
+}
+
+TEST(Grid, CellSizeNotDividingBoxIsAnError) {
+    const InputError e = catchInputError([] {
+        Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.3\n"));
+    });
+    EXPECT_EQ(e.key(), "cellSize") << e.what();
+    EXPECT_NE(std::string(e.what()).find("whole number of cells"), std::string::npos) << e.what();
+}
+
+TEST(Grid, MaxNotAboveMinIsAnError) {
+    for (const char* text : {"bounds: {min: [0, 0], max: [1, 0]}\ncellSize: 0.25\n",
+                             "bounds: {min: [0, 0], max: [-1, 1]}\ncellSize: 0.25\n"}) {
+        const InputError e = catchInputError([text] { Grid<2> g(parse(text)); });
+        EXPECT_NE(std::string(e.what()).find("max must exceed min"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(Grid, OtherInputErrors) {
+    // Non-positive cell size, wrong vector length, friction without coefficient, unknown key.
+    for (const char* text :
+         {"bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0\n",
+          "bounds: {min: [0, 0, 0], max: [1, 1]}\ncellSize: 0.25\n",
+          "bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\nboundary: {xMin: friction}\n",
+          "bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\nboundary: {xmin: slip}\n"}) {
+        SCOPED_TRACE(text);
+        EXPECT_THROW(Grid<2> g(parse(text)), InputError);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// BlockSort colouring
+
+template <int dim> Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed) {
+    Particles<dim> p;
+    p.resize(n);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < n; ++i)
+        for (int d = 0; d < dim; ++d)
+            p.x[i][d] = g.lo()[d] + u(rng) * (g.hi()[d] - g.lo()[d]);
+    return p;
+}
+
+/// Nodes any kernel's stencil can touch from xh: [floor(xh) - 1, floor(xh) + 2] per axis.
+template <int dim> void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std::set<Index>& out) {
+    IVec<dim> f;
+    for (int d = 0; d < dim; ++d) f[d] = static_cast<int>(std::floor(xh[d])) - 1;
+    const int S = dim == 2 ? 16 : 64;
+    for (int s = 0; s < S; ++s) {
+        IVec<dim> c;
+        int r = s;
+        for (int d = 0; d < dim; ++d) {
+            c[d] = f[d] + r % 4;
+            r /= 4;
+        }
+        out.insert(g.nodeIndex(c));
+    }
+}
+
+template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed) {
+    const Particles<dim> p = randomParticles(g, n, seed);
+    BlockSort<dim> sort;
+    ASSERT_EQ(sort.update(p, g), -1);
+
+    // order() is a permutation, grouped by block, stable within a block.
+    const auto& order = sort.order();
+    ASSERT_EQ(order.size(), p.size());
+    std::vector<int> seen(p.size(), 0);
+    for (Index b = 0; b < g.numBlocks(); ++b) {
+        for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+            const Index i = order[j];
+            ++seen[i];
+            ASSERT_EQ(g.blockOf((p.x[i] - g.origin()) * g.invH()), b);
+            if (j > sort.start(b)) {
+                ASSERT_LT(order[j - 1], i);
+            }
+        }
+    }
+    for (int s : seen) ASSERT_EQ(s, 1);
+
+    // Every non-empty block is in exactly one colour list, that of its coordinate parity.
+    std::vector<int> listed(g.numBlocks(), 0);
+    for (int c = 0; c < BlockSort<dim>::NumColours; ++c)
+        for (Index b : sort.blocksOfColour(c)) {
+            ++listed[b];
+            const IVec<dim> bc = g.blockCoord(b);
+            int colour = 0;
+            for (int d = 0; d < dim; ++d) colour |= (bc[d] & 1) << d;
+            EXPECT_EQ(colour, c);
+        }
+    for (Index b = 0; b < g.numBlocks(); ++b)
+        EXPECT_EQ(listed[b], sort.start(b + 1) > sort.start(b) ? 1 : 0) << "block " << b;
+
+    // Brute force: within one colour, no two blocks' particles share a stencil node — neither
+    // with the particles present nor for any point the block could hold.
+    std::set<Index> active(sort.activeNodeBlocks().begin(), sort.activeNodeBlocks().end());
+    for (int c = 0; c < BlockSort<dim>::NumColours; ++c) {
+        const auto& blocks = sort.blocksOfColour(c);
+        std::vector<std::set<Index>> nodes(blocks.size()), worst(blocks.size());
+        for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
+            const Index b = blocks[bi];
+            for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+                const Vec<dim> xh = (p.x[order[j]] - g.origin()) * g.invH();
+                stencilNodes(g, xh, nodes[bi]);
+            }
+            // Worst case: the block's 4^dim cells, each stencil clipped to the arrays.
+            const IVec<dim> bc = g.blockCoord(b);
+            const int cells = dim == 2 ? 16 : 64;
+            for (int s = 0; s < cells; ++s) {
+                Vec<dim> xh;
+                int r = s;
+                bool ok = true;
+                for (int d = 0; d < dim; ++d) {
+                    xh[d] = Grid<dim>::BlockSize * bc[d] + r % 4 + 0.5;
+                    r /= 4;
+                    if (xh[d] < 1.0 || xh[d] + 2.0 >= g.nodes()[d]) ok = false;
+                }
+                if (ok) stencilNodes(g, xh, worst[bi]);
+            }
+            // Nodes that can receive mass lie in active node blocks.
+            for (Index k : nodes[bi]) {
+                const IVec<dim> nc = nodeCoord(g, k);
+                Index nb = 0;
+                for (int d = dim - 1; d >= 0; --d)
+                    nb = nb * g.blocks()[d] + nc[d] / Grid<dim>::BlockSize;
+                ASSERT_TRUE(active.count(nb)) << "node " << k << " of block " << b;
+            }
+        }
+        for (std::size_t a = 0; a < blocks.size(); ++a)
+            for (std::size_t b = a + 1; b < blocks.size(); ++b) {
+                for (Index k : nodes[a])
+                    ASSERT_FALSE(nodes[b].count(k))
+                        << "colour " << c << ": blocks " << blocks[a] << " and " << blocks[b]
+                        << " share node " << k;
+                for (Index k : worst[a])
+                    ASSERT_FALSE(worst[b].count(k))
+                        << "colour " << c << ": blocks " << blocks[a] << " and " << blocks[b]
+                        << " could share node " << k;
+            }
+    }
+}
+
+TEST(BlockSort, SameColourBlocksShareNoStencilNode2D) {
+    const Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1.5]}\ncellSize: 0.0625\n"));
+    checkColouring(g, 3000, 1);
+}
+
+TEST(BlockSort, SameColourBlocksShareNoStencilNode3D) {
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 0.75, 1.25]}\ncellSize: 0.125\n"));
+    checkColouring(g, 3000, 2);
+}
+
+TEST(BlockSort, ReportsFirstParticleOutsideArrays) {
+    const Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\n"));
+    Particles<2> p = randomParticles(g, 10, 3);
+    BlockSort<2> sort;
+    EXPECT_EQ(sort.update(p, g), -1);
+    p.x[7] = Vec<2>(0.5, 10.0);
+    p.x[4] = Vec<2>(-2.0, 0.5);
+    EXPECT_EQ(sort.update(p, g), 4);
+    // A point one cell outside the box is still inside the arrays.
+    p.x[4] = Vec<2>(-0.24, 0.5);
+    p.x[7] = Vec<2>(1.24, 1.24);
+    EXPECT_EQ(sort.update(p, g), -1);
+}
+
+} // namespace
+} // namespace mpm

@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Elastic constants, Hencky hyperelasticity, Jaumann linear elasticity and material selection.
+#include "materials/HenckyElastic.hpp"
+#include "materials/LinearElastic.hpp"
+#include "materials/Material.hpp"
+
+#include "core/SymmetricEigen.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+
+namespace mpm {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+Dictionary parse(const std::string& text) {
+    return Dictionary::fromString(text, "constant/materials");
+}
+
+InputError catchInputError(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "expected an InputError";
+    return InputError("", -1, "", "no error");
+}
+
+Mat3 randomMatrix(std::mt19937_64& rng, double scale) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Mat3 a;
+    for (int i = 0; i < 9; ++i) a(i) = scale * u(rng);
+    return a;
+}
+
+Mat3 randomSymmetric(std::mt19937_64& rng, double scale) {
+    const Mat3 a = randomMatrix(rng, scale);
+    return 0.5 * (a + a.transpose());
+}
+
+/// Sorted eigenvalues of a symmetric matrix.
+Vec3 sortedEigenvalues(const Mat3& a) {
+    Vec3 lam;
+    Mat3 Q;
+    symmetricEigen3(0.5 * (a + a.transpose()), lam, Q);
+    std::sort(lam.data(), lam.data() + 3);
+    return lam;
+}
+
+// ---------------------------------------------------------------------------------------------
+// ElasticConstants
+
+TEST(ElasticConstants, FromYoungsModulusAndPoissonRatio) {
+    const double E = 2.5e7, nu = 0.3;
+    const ElasticConstants c(E, nu);
+    EXPECT_DOUBLE_EQ(c.E, E);
+    EXPECT_DOUBLE_EQ(c.nu, nu);
+    EXPECT_NEAR(c.G, E / (2 * (1 + nu)), 1e-9 * E);
+    EXPECT_NEAR(c.K, E / (3 * (1 - 2 * nu)), 1e-9 * E);
+    EXPECT_NEAR(c.lambda, E * nu / ((1 + nu) * (1 - 2 * nu)), 1e-9 * E);
+    EXPECT_NEAR(c.M, E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)), 1e-9 * E);
+    // Consistency of the usual identities.
+    EXPECT_NEAR(c.lambda, c.K - 2.0 * c.G / 3.0, 1e-9 * E);
+    EXPECT_NEAR(c.M, c.lambda + 2.0 * c.G, 1e-9 * E);
+    EXPECT_NEAR(9 * c.K * c.G / (3 * c.K + c.G), E, 1e-9 * E);
+    EXPECT_NEAR((3 * c.K - 2 * c.G) / (2 * (3 * c.K + c.G)), nu, 1e-12);
+}
+
+TEST(ElasticConstants, FromDictionary) {
+    const ElasticConstants c(parse("E: 1e6\nnu: 0.25\n"));
+    EXPECT_DOUBLE_EQ(c.E, 1e6);
+    EXPECT_NEAR(c.G, 4e5, 1e-6);
+    EXPECT_NEAR(c.lambda, 4e5, 1e-6); // ν = 1/4: λ = G
+}
+
+TEST(ElasticConstants, IncompressibleAndOutOfRangeRejected) {
+    for (const char* text : {"E: 1e6\nnu: 0.5\n", "E: 1e6\nnu: 0.6\n", "E: 1e6\nnu: -1\n",
+                             "E: 0\nnu: 0.3\n", "E: -1e6\nnu: 0.3\n"}) {
+        SCOPED_TRACE(text);
+        EXPECT_THROW(ElasticConstants c(parse(text)), InputError);
+    }
+    const InputError e = catchInputError([] {
+        Material<3>::create(parse("type: henckyElastic\ndensity: 2000\nE: 1e7\nnu: 0.5\n"), "m");
+    });
+    EXPECT_EQ(e.key(), "nu") << e.what();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Material selection
+
+TEST(Material, UnknownTypeListsValidTypes) {
+    const InputError e = catchInputError([] {
+        Material<2>::create(parse("type: rubber\ndensity: 1000\nE: 1e6\nnu: 0.3\n"), "m");
+    });
+    const std::string msg = e.what();
+    EXPECT_EQ(e.key(), "type") << msg;
+    EXPECT_NE(msg.find("rubber"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("henckyElastic"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("linearElastic"), std::string::npos) << msg;
+}
+
+TEST(Material, CreateReadsDensityAndRejectsUnknownKeys) {
+    const auto m = Material<3>::create(
+        parse("type: linearElastic\ndensity: 2000\nE: 1.8e7\nnu: 0.3\n"), "soil");
+    EXPECT_EQ(m->name(), "soil");
+    EXPECT_DOUBLE_EQ(m->density(), 2000.0);
+    const ElasticConstants c(1.8e7, 0.3);
+    EXPECT_NEAR(m->waveSpeed(), std::sqrt(c.M / 2000.0), 1e-12 * m->waveSpeed());
+    EXPECT_NEAR(m->defaultK0(), 0.3 / 0.7, 1e-15);
+    EXPECT_THROW(Material<3>::create(
+                     parse("type: henckyElastic\ndensity: 2000\nE: 1e7\nnu: 0.3\nEE: 1\n"), "m"),
+                 InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hencky
+
+/// τ = ∂ψ/∂F Fᵀ with ψ(F) = ψ(F Fᵀ), by central differences.
+Mat3 kirchhoffByFiniteDifference(const ElasticConstants& c, const Mat3& F, double delta) {
+    Mat3 P;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            Mat3 Fp = F, Fm = F;
+            Fp(i, j) += delta;
+            Fm(i, j) -= delta;
+            P(i, j) = (HenckyElastic<3>::energyDensity(c, Fp * Fp.transpose()) -
+                       HenckyElastic<3>::energyDensity(c, Fm * Fm.transpose())) /
+                      (2 * delta);
+        }
+    return P * F.transpose();
+}
+
+void checkKirchhoffIsEnergyDerivative(double strain, unsigned seed) {
+    const ElasticConstants c(1.0e7, 0.3);
+    std::mt19937_64 rng(seed);
+    for (int trial = 0; trial < 50; ++trial) {
+        const Mat3 F = Mat3::Identity() + randomMatrix(rng, strain);
+        ASSERT_GT(F.determinant(), 0.0);
+        const Mat3 be = F * F.transpose();
+        const Mat3 tau = HenckyElastic<3>::kirchhoff(c, be);
+        const Mat3 fd = kirchhoffByFiniteDifference(c, F, 1e-6);
+        EXPECT_LE((tau - fd).norm(), 1e-6 * tau.norm()) << "F =\n" << F << "\nτ =\n"
+                                                          << tau << "\nFD =\n" << fd;
+    }
+}
+
+TEST(HenckyElastic, KirchhoffIsEnergyDerivativeNearIdentity) {
+    checkKirchhoffIsEnergyDerivative(0.01, 1);
+}
+
+TEST(HenckyElastic, KirchhoffIsEnergyDerivativeAtLargeStrain) {
+    checkKirchhoffIsEnergyDerivative(0.3, 2);
+}
+
+TEST(HenckyElastic, ZeroStressAndEnergyAtIdentity) {
+    const ElasticConstants c(1.0e7, 0.3);
+    EXPECT_EQ(HenckyElastic<3>::kirchhoff(c, Mat3::Identity()).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(HenckyElastic<3>::energyDensity(c, Mat3::Identity()), 0.0);
+}
+
+TEST(HenckyElastic, KirchhoffOfKnownStrain) {
+    // bᵉ = diag(e^{2a}, e^{2b}, e^{2c}): ε = diag(a, b, c), τ = λ tr ε 1 + 2G ε.
+    const ElasticConstants c(1.0e7, 0.25);
+    const Vec3 eps(-0.02, 0.01, 0.005);
+    const Mat3 be = (2.0 * eps).array().exp().matrix().asDiagonal();
+    const Mat3 tau = HenckyElastic<3>::kirchhoff(c, be);
+    const Mat3 expected =
+        c.lambda * eps.sum() * Mat3::Identity() + 2.0 * c.G * Mat3(eps.asDiagonal());
+    EXPECT_LE((tau - expected).norm(), 1e-10 * expected.norm());
+    const double psi = 0.5 * c.lambda * eps.sum() * eps.sum() + c.G * eps.squaredNorm();
+    EXPECT_NEAR(HenckyElastic<3>::energyDensity(c, be), psi, 1e-12 * psi);
+}
+
+TEST(HenckyElastic, LeftCauchyGreenFromStressInvertsKirchhoff) {
+    const ElasticConstants c(5.0e6, 0.35);
+    std::mt19937_64 rng(3);
+    for (int trial = 0; trial < 200; ++trial) {
+        // bᵉ = exp(2ε) for a random symmetric ε.
+        const Mat3 eps = randomSymmetric(rng, trial % 2 ? 0.3 : 1e-3);
+        Vec3 lam;
+        Mat3 Q;
+        symmetricEigen3(eps, lam, Q);
+        const Mat3 be = fromEigen(Q, (2.0 * lam).array().exp().matrix());
+        const Mat3 tau = HenckyElastic<3>::kirchhoff(c, be);
+        const Mat3 back = HenckyElastic<3>::leftCauchyGreenFromStress(c, tau);
+        EXPECT_LE((back - be).norm(), 1e-12 * be.norm()) << "bᵉ =\n" << be;
+        // And the other way round, from a prescribed stress.
+        const Mat3 tau0 = randomSymmetric(rng, 1e5);
+        const Mat3 tau1 =
+            HenckyElastic<3>::kirchhoff(c, HenckyElastic<3>::leftCauchyGreenFromStress(c, tau0));
+        EXPECT_LE((tau1 - tau0).norm(), 1e-9 * tau0.norm());
+    }
+}
+
+TEST(HenckyElastic, InitialiseFromStress) {
+    const auto m =
+        Material<3>::create(parse("type: henckyElastic\ndensity: 2000\nE: 1e7\nnu: 0.3\n"), "m");
+    Particles<3> p;
+    p.resize(2);
+    Mat3 sigma0 = Mat3::Zero();
+    sigma0.diagonal() << -3e4, -3e4, -7e4;
+    m->initialise(p, 0, sigma0);
+    m->initialise(p, 1, Mat3::Zero());
+    EXPECT_EQ(p.be[1], Mat3::Identity());
+    EXPECT_EQ(p.stress[0], sigma0);
+    EXPECT_LE((HenckyElastic<3>::kirchhoff(ElasticConstants(1e7, 0.3), p.be[0]) - sigma0).norm(),
+              1e-9 * sigma0.norm());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Linear elastic (Jaumann rate)
+
+std::unique_ptr<Material<3>> linearElastic(double E, double nu) {
+    return Material<3>::create(parse("type: linearElastic\ndensity: 2000\nE: " +
+                                     std::to_string(E) + "\nnu: " + std::to_string(nu) + "\n"),
+                               "m");
+}
+
+TEST(LinearElastic, SpinLeavesStressInvariantsUnchanged) {
+    // Rotate a prestressed state through 90° about z by a pure spin (L skew) in small steps:
+    // the Jaumann rate is objective, so the eigenvalues stay and σ_xx, σ_yy swap.
+    // 10⁴ calls for one particle: one thread, so that the test does not time the OpenMP
+    // fork/join of a loaded machine.
+    struct OneThread {
+        int saved = omp_get_max_threads();
+        OneThread() { omp_set_num_threads(1); }
+        ~OneThread() { omp_set_num_threads(saved); }
+    } oneThread;
+    const auto m = linearElastic(1e7, 0.3);
+    Particles<3> p;
+    p.resize(1);
+    Mat3 sigma0 = Mat3::Zero();
+    sigma0.diagonal() << -1e5, -2e5, -3e5;
+    sigma0(0, 2) = sigma0(2, 0) = 2e4;
+    m->initialise(p, 0, sigma0);
+    const double omega = 1.0;
+    const int steps = 10000;
+    const double dt = 0.5 * pi / omega / steps;
+    p.L[0] << 0.0, -omega, 0.0, omega, 0.0, 0.0, 0.0, 0.0, 0.0;
+    p.F[0] = Mat3::Identity();
+    p.volume[0] = p.volume0[0] = 1.0;
+    const std::vector<Index> ids{0};
+    const Vec3 lam0 = sortedEigenvalues(sigma0);
+    for (int s = 0; s < steps; ++s) {
+        ASSERT_EQ(m->updateStress(p, ids, dt), -1);
+        if (s % 1000 == 999) {
+            const Vec3 lam = sortedEigenvalues(p.stress[0]);
+            ASSERT_LE((lam - lam0).cwiseAbs().maxCoeff(), 1e-3 * lam0.cwiseAbs().maxCoeff())
+                << "step " << s << ": " << lam.transpose();
+        }
+    }
+    // R = rotation by 90° about z: σ = R σ₀ Rᵀ.
+    Mat3 R;
+    R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+    const Mat3 expected = R * sigma0 * R.transpose();
+    EXPECT_LE((p.stress[0] - expected).norm(), 1e-3 * sigma0.norm()) << p.stress[0];
+    EXPECT_LE((p.stress[0] - p.stress[0].transpose()).norm(), 1e-12 * sigma0.norm());
+}
+
+TEST(LinearElastic, UniaxialStrainIncrement) {
+    const double E = 1e7, nu = 0.3;
+    const auto m = linearElastic(E, nu);
+    const ElasticConstants c(E, nu);
+    Particles<3> p;
+    p.resize(1);
+    m->initialise(p, 0, Mat3::Zero());
+    p.F[0] = Mat3::Identity();
+    p.volume[0] = p.volume0[0] = 1.0;
+    const double dt = 1e-3, rate = -0.5; // ε_xx = -5e-4
+    p.L[0] = Mat3::Zero();
+    p.L[0](0, 0) = rate;
+    ASSERT_EQ(m->updateStress(p, {0}, dt), -1);
+    const double eps = rate * dt;
+    EXPECT_NEAR(p.stress[0](0, 0), c.M * eps, 1e-9 * std::fabs(c.M * eps));
+    EXPECT_NEAR(p.stress[0](1, 1), c.lambda * eps, 1e-9 * std::fabs(c.lambda * eps));
+    EXPECT_NEAR(p.stress[0](2, 2), c.lambda * eps, 1e-9 * std::fabs(c.lambda * eps));
+    EXPECT_EQ(p.stress[0](0, 1), 0.0);
+}
+
+TEST(LinearElastic, StressIncrementIsStiffnessTimesStrain) {
+    // From zero stress the spin term vanishes: Δσ = λ tr(Δε) 1 + 2G Δε for any L.
+    const double E = 3e7, nu = 0.2;
+    const auto m = linearElastic(E, nu);
+    const ElasticConstants c(E, nu);
+    std::mt19937_64 rng(9);
+    Particles<3> p;
+    p.resize(1);
+    p.F[0] = Mat3::Identity();
+    p.volume[0] = p.volume0[0] = 1.0;
+    for (int trial = 0; trial < 20; ++trial) {
+        m->initialise(p, 0, Mat3::Zero());
+        p.L[0] = randomMatrix(rng, 1.0);
+        const double dt = 1e-4;
+        ASSERT_EQ(m->updateStress(p, {0}, dt), -1);
+        const Mat3 deps = 0.5 * dt * (p.L[0] + p.L[0].transpose());
+        const Mat3 expected = c.lambda * deps.trace() * Mat3::Identity() + 2.0 * c.G * deps;
+        EXPECT_LE((p.stress[0] - expected).norm(), 1e-12 * expected.norm());
+    }
+}
+
+TEST(LinearElastic, StrainEnergyIsComplementaryEnergy) {
+    const double E = 1e7, nu = 0.3;
+    const auto m = linearElastic(E, nu);
+    const ElasticConstants c(E, nu);
+    Particles<3> p;
+    p.resize(1);
+    Mat3 eps;
+    eps << 1e-3, 2e-4, 0, 2e-4, -5e-4, 1e-4, 0, 1e-4, 3e-4;
+    const Mat3 sigma = c.lambda * eps.trace() * Mat3::Identity() + 2.0 * c.G * eps;
+    m->initialise(p, 0, sigma);
+    p.volume[0] = p.volume0[0] = 2.0;
+    const double expected = 0.5 * (sigma.array() * eps.array()).sum() * 2.0;
+    EXPECT_NEAR(m->strainEnergy(p, 0), expected, 1e-10 * expected);
+}
+
+} // namespace
+} // namespace mpm
