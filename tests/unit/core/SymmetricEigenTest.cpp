@@ -21,7 +21,8 @@ Mat3 randomRotation(std::mt19937_64& rng) {
 Mat3 randomSymmetric(std::mt19937_64& rng, double scale) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Mat3 a;
-    for (int i = 0; i < 9; ++i) a(i) = scale * u(rng);
+    for (int i = 0; i < 9; ++i)
+        a(i) = scale * u(rng);
     return 0.5 * (a + a.transpose());
 }
 
@@ -44,8 +45,7 @@ void checkDecomposition(const Mat3& A, const Vec3* expected = nullptr) {
         std::sort(got.begin(), got.end());
         std::sort(want.begin(), want.end());
         for (int k = 0; k < 3; ++k)
-            EXPECT_NEAR(got[k], want[k], 1e-13 * std::max(1.0, std::fabs(want[k])))
-                << "A =\n" << A;
+            EXPECT_NEAR(got[k], want[k], 1e-13 * std::max(1.0, std::fabs(want[k]))) << "A =\n" << A;
     }
 }
 

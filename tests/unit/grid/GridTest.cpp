@@ -15,7 +15,9 @@
 namespace mpm {
 namespace {
 
-Dictionary parse(const std::string& text) { return Dictionary::fromString(text, "constant/grid"); }
+Dictionary parse(const std::string& text) {
+    return Dictionary::fromString(text, "constant/grid");
+}
 
 InputError catchInputError(const std::function<void()>& f) {
     try {
@@ -28,7 +30,8 @@ InputError catchInputError(const std::function<void()>& f) {
 }
 
 /// Integer coordinates of node k (x fastest).
-template <int dim> IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
+template <int dim>
+IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
     IVec<dim> c;
     for (int d = 0; d < dim; ++d) {
         c[d] = static_cast<int>(k % g.nodes()[d]);
@@ -60,7 +63,8 @@ TEST(Grid, NodeCountsAndOriginWithPadding2D) {
     EXPECT_EQ(g.numBlocks(), Index(g.blocks()[0]) * g.blocks()[1]);
     EXPECT_EQ(g.mass.size(), static_cast<std::size_t>(g.numNodes()));
     EXPECT_EQ(g.v.size(), static_cast<std::size_t>(g.numNodes()));
-    for (Index k = 0; k < g.numNodes(); ++k) ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
+    for (Index k = 0; k < g.numNodes(); ++k)
+        ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
 }
 
 TEST(Grid, NodeCountsAndOriginWithPadding3D) {
@@ -70,9 +74,11 @@ TEST(Grid, NodeCountsAndOriginWithPadding3D) {
     EXPECT_EQ(g.nodes()[1], 10 + 1 + 2 * P);
     EXPECT_EQ(g.nodes()[2], 15 + 1 + 2 * P);
     EXPECT_EQ(g.stride(2), Index(g.nodes()[0]) * g.nodes()[1]);
-    for (int d = 0; d < 3; ++d) EXPECT_NEAR(g.origin()[d], -P * 0.1, 1e-15);
+    for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(g.origin()[d], -P * 0.1, 1e-15);
     EXPECT_NEAR(g.hi()[2], 1.5, 1e-15);
-    for (Index k = 0; k < g.numNodes(); ++k) ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
+    for (Index k = 0; k < g.numNodes(); ++k)
+        ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
 }
 
 TEST(Grid, BlockOfAndBlockCoordAgree) {
@@ -147,9 +153,8 @@ TEST(Grid, FaceConditions) {
 }
 
 TEST(Grid, CellSizeNotDividingBoxIsAnError) {
-    const InputError e = catchInputError([] {
-        Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.3\n"));
-    });
+    const InputError e = catchInputError(
+        [] { Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.3\n")); });
     EXPECT_EQ(e.key(), "cellSize") << e.what();
     EXPECT_NE(std::string(e.what()).find("whole number of cells"), std::string::npos) << e.what();
 }
@@ -158,8 +163,7 @@ TEST(Grid, MaxNotAboveMinIsAnError) {
     for (const char* text : {"bounds: {min: [0, 0], max: [1, 0]}\ncellSize: 0.25\n",
                              "bounds: {min: [0, 0], max: [-1, 1]}\ncellSize: 0.25\n"}) {
         const InputError e = catchInputError([text] { Grid<2> g(parse(text)); });
-        EXPECT_NE(std::string(e.what()).find("max must exceed min"), std::string::npos)
-            << e.what();
+        EXPECT_NE(std::string(e.what()).find("max must exceed min"), std::string::npos) << e.what();
     }
 }
 
@@ -178,7 +182,8 @@ TEST(Grid, OtherInputErrors) {
 // ---------------------------------------------------------------------------------------------
 // BlockSort colouring
 
-template <int dim> Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed) {
+template <int dim>
+Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed) {
     Particles<dim> p;
     p.resize(n);
     std::mt19937_64 rng(seed);
@@ -190,9 +195,11 @@ template <int dim> Particles<dim> randomParticles(const Grid<dim>& g, int n, uns
 }
 
 /// Nodes any kernel's stencil can touch from xh: [floor(xh) - 1, floor(xh) + 2] per axis.
-template <int dim> void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std::set<Index>& out) {
+template <int dim>
+void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std::set<Index>& out) {
     IVec<dim> f;
-    for (int d = 0; d < dim; ++d) f[d] = static_cast<int>(std::floor(xh[d])) - 1;
+    for (int d = 0; d < dim; ++d)
+        f[d] = static_cast<int>(std::floor(xh[d])) - 1;
     const int S = dim == 2 ? 16 : 64;
     for (int s = 0; s < S; ++s) {
         IVec<dim> c;
@@ -205,7 +212,8 @@ template <int dim> void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std
     }
 }
 
-template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed) {
+template <int dim>
+void checkColouring(const Grid<dim>& g, int n, unsigned seed) {
     const Particles<dim> p = randomParticles(g, n, seed);
     BlockSort<dim> sort;
     ASSERT_EQ(sort.update(p, g), -1);
@@ -224,7 +232,8 @@ template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed)
             }
         }
     }
-    for (int s : seen) ASSERT_EQ(s, 1);
+    for (int s : seen)
+        ASSERT_EQ(s, 1);
 
     // Every non-empty block is in exactly one colour list, that of its coordinate parity.
     std::vector<int> listed(g.numBlocks(), 0);
@@ -233,7 +242,8 @@ template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed)
             ++listed[b];
             const IVec<dim> bc = g.blockCoord(b);
             int colour = 0;
-            for (int d = 0; d < dim; ++d) colour |= (bc[d] & 1) << d;
+            for (int d = 0; d < dim; ++d)
+                colour |= (bc[d] & 1) << d;
             EXPECT_EQ(colour, c);
         }
     for (Index b = 0; b < g.numBlocks(); ++b)
@@ -277,9 +287,8 @@ template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed)
         for (std::size_t a = 0; a < blocks.size(); ++a)
             for (std::size_t b = a + 1; b < blocks.size(); ++b) {
                 for (Index k : nodes[a])
-                    ASSERT_FALSE(nodes[b].count(k))
-                        << "colour " << c << ": blocks " << blocks[a] << " and " << blocks[b]
-                        << " share node " << k;
+                    ASSERT_FALSE(nodes[b].count(k)) << "colour " << c << ": blocks " << blocks[a]
+                                                    << " and " << blocks[b] << " share node " << k;
                 for (Index k : worst[a])
                     ASSERT_FALSE(worst[b].count(k))
                         << "colour " << c << ": blocks " << blocks[a] << " and " << blocks[b]

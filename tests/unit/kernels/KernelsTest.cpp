@@ -15,7 +15,8 @@ namespace mpm {
 namespace {
 
 /// Call fn(kernel, name) for every kernel, GIMP with two particle half-widths.
-template <class Fn> void forEachKernel(Fn&& fn) {
+template <class Fn>
+void forEachKernel(Fn&& fn) {
     fn(LinearKernel{}, "linear");
     GimpKernel g1;
     g1.l = 0.25;
@@ -33,7 +34,8 @@ std::vector<double> samplePoints(unsigned seed, int count = 2000) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(1.0, 40.0);
     std::vector<double> xs(count);
-    for (double& x : xs) x = u(rng);
+    for (double& x : xs)
+        x = u(rng);
     for (int i = 2; i < 5; ++i) {
         for (double f : {0.0, 0.5, 0.125, 0.25, 0.75, 0.875}) {
             const double x = i + f;
@@ -46,12 +48,21 @@ std::vector<double> samplePoints(unsigned seed, int count = 2000) {
 }
 
 /// Fractional positions frac(xh) at which some weight of the kernel is not smooth.
-std::vector<double> kinks(const LinearKernel&) { return {0.0}; }
-std::vector<double> kinks(const GimpKernel& k) { return {k.l, 1.0 - k.l}; }
-std::vector<double> kinks(const QuadraticBSplineKernel&) { return {0.5}; }
-std::vector<double> kinks(const CubicBSplineKernel&) { return {0.0}; }
+std::vector<double> kinks(const LinearKernel&) {
+    return {0.0};
+}
+std::vector<double> kinks(const GimpKernel& k) {
+    return {k.l, 1.0 - k.l};
+}
+std::vector<double> kinks(const QuadraticBSplineKernel&) {
+    return {0.5};
+}
+std::vector<double> kinks(const CubicBSplineKernel&) {
+    return {0.0};
+}
 
-template <class K> double distanceToKink(const K& k, double xh) {
+template <class K>
+double distanceToKink(const K& k, double xh) {
     const double f = xh - std::floor(xh);
     double d = 1.0;
     for (double c : kinks(k)) {
@@ -62,13 +73,22 @@ template <class K> double distanceToKink(const K& k, double xh) {
 }
 
 /// Half-width of the support of N(d) in cell units.
-double supportRadius(const LinearKernel&) { return 1.0; }
-double supportRadius(const GimpKernel& k) { return 1.0 + k.l; }
-double supportRadius(const QuadraticBSplineKernel&) { return 1.5; }
-double supportRadius(const CubicBSplineKernel&) { return 2.0; }
+double supportRadius(const LinearKernel&) {
+    return 1.0;
+}
+double supportRadius(const GimpKernel& k) {
+    return 1.0 + k.l;
+}
+double supportRadius(const QuadraticBSplineKernel&) {
+    return 1.5;
+}
+double supportRadius(const CubicBSplineKernel&) {
+    return 2.0;
+}
 
 /// Weight (or derivative) of grid node `node` at xh; zero outside the stencil.
-template <class K> double weightAt(const K& k, double xh, int node, bool derivative = false) {
+template <class K>
+double weightAt(const K& k, double xh, int node, bool derivative = false) {
     double w[K::Width], dw[K::Width];
     const int base = k.eval(xh, w, dw);
     const int j = node - base;
@@ -84,7 +104,8 @@ TEST(Kernels, WeightsSumToOne) {
             double w[K::Width], dw[K::Width];
             k.eval(xh, w, dw);
             double sum = 0.0;
-            for (double wk : w) sum += wk;
+            for (double wk : w)
+                sum += wk;
             ASSERT_NEAR(sum, 1.0, 1e-14) << "xh = " << xh;
         }
     });
@@ -98,7 +119,8 @@ TEST(Kernels, DerivativesSumToZero) {
             double w[K::Width], dw[K::Width];
             k.eval(xh, w, dw);
             double sum = 0.0;
-            for (double d : dw) sum += d;
+            for (double d : dw)
+                sum += d;
             ASSERT_NEAR(sum, 0.0, 1e-13) << "xh = " << xh;
         }
     });
@@ -187,13 +209,15 @@ TEST(Kernels, ReproduceLinearFields) {
     });
 }
 
-template <class K> void expectConstantInertia(const K& k) {
+template <class K>
+void expectConstantInertia(const K& k) {
     // Σ w_k (x_k - xh)² = D / h², the APIC inertia: constant for B-splines [000 Eq. 13].
     for (double xh : samplePoints(8)) {
         double w[K::Width], dw[K::Width];
         const int base = k.eval(xh, w, dw);
         double m2 = 0.0;
-        for (int j = 0; j < K::Width; ++j) m2 += w[j] * (base + j - xh) * (base + j - xh);
+        for (int j = 0; j < K::Width; ++j)
+            m2 += w[j] * (base + j - xh) * (base + j - xh);
         ASSERT_NEAR(m2, K::InertiaFactor, 1e-13) << "xh = " << xh;
     }
 }
@@ -202,7 +226,9 @@ TEST(Kernels, QuadraticSecondMomentIsInertiaFactor) {
     expectConstantInertia(QuadraticBSplineKernel{});
 }
 
-TEST(Kernels, CubicSecondMomentIsInertiaFactor) { expectConstantInertia(CubicBSplineKernel{}); }
+TEST(Kernels, CubicSecondMomentIsInertiaFactor) {
+    expectConstantInertia(CubicBSplineKernel{});
+}
 
 TEST(Kernels, KnownValues) {
     double w[4], dw[4];
@@ -231,12 +257,14 @@ TEST(Kernels, KnownValues) {
 
 /// Tensor product in dim dimensions: weights sum to one, gradients to zero, and the gradient of
 /// the linear field x reproduces the identity.
-template <int dim, class K> void checkTensorProduct(const K& k, unsigned seed) {
+template <int dim, class K>
+void checkTensorProduct(const K& k, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(1.0, 30.0);
     constexpr int W = K::Width;
     int S = 1;
-    for (int d = 0; d < dim; ++d) S *= W;
+    for (int d = 0; d < dim; ++d)
+        S *= W;
     for (int sample = 0; sample < 300; ++sample) {
         double xh[dim];
         double w[dim][W], dw[dim][W];
@@ -256,13 +284,16 @@ template <int dim, class K> void checkTensorProduct(const K& k, unsigned seed) {
                 r /= W;
             }
             double wgt = 1.0;
-            for (int d = 0; d < dim; ++d) wgt *= w[d][idx[d]];
+            for (int d = 0; d < dim; ++d)
+                wgt *= w[d][idx[d]];
             sumW += wgt;
             for (int b = 0; b < dim; ++b) {
                 double g = 1.0;
-                for (int d = 0; d < dim; ++d) g *= d == b ? dw[d][idx[d]] : w[d][idx[d]];
+                for (int d = 0; d < dim; ++d)
+                    g *= d == b ? dw[d][idx[d]] : w[d][idx[d]];
                 sumGrad[b] += g;
-                for (int a = 0; a < dim; ++a) gradX[a][b] += (base[a] + idx[a]) * g;
+                for (int a = 0; a < dim; ++a)
+                    gradX[a][b] += (base[a] + idx[a]) * g;
             }
         }
         ASSERT_NEAR(sumW, 1.0, 1e-14);

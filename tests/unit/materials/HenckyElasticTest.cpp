@@ -37,7 +37,8 @@ InputError catchInputError(const std::function<void()>& f) {
 Mat3 randomMatrix(std::mt19937_64& rng, double scale) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Mat3 a;
-    for (int i = 0; i < 9; ++i) a(i) = scale * u(rng);
+    for (int i = 0; i < 9; ++i)
+        a(i) = scale * u(rng);
     return a;
 }
 
@@ -97,9 +98,8 @@ TEST(ElasticConstants, IncompressibleAndOutOfRangeRejected) {
 // Material selection
 
 TEST(Material, UnknownTypeListsValidTypes) {
-    const InputError e = catchInputError([] {
-        Material<2>::create(parse("type: rubber\ndensity: 1000\nE: 1e6\nnu: 0.3\n"), "m");
-    });
+    const InputError e = catchInputError(
+        [] { Material<2>::create(parse("type: rubber\ndensity: 1000\nE: 1e6\nnu: 0.3\n"), "m"); });
     const std::string msg = e.what();
     EXPECT_EQ(e.key(), "type") << msg;
     EXPECT_NE(msg.find("rubber"), std::string::npos) << msg;
@@ -147,8 +147,10 @@ void checkKirchhoffIsEnergyDerivative(double strain, unsigned seed) {
         const Mat3 be = F * F.transpose();
         const Mat3 tau = HenckyElastic<3>::kirchhoff(c, be);
         const Mat3 fd = kirchhoffByFiniteDifference(c, F, 1e-6);
-        EXPECT_LE((tau - fd).norm(), 1e-6 * tau.norm()) << "F =\n" << F << "\nτ =\n"
-                                                          << tau << "\nFD =\n" << fd;
+        EXPECT_LE((tau - fd).norm(), 1e-6 * tau.norm()) << "F =\n"
+                                                        << F << "\nτ =\n"
+                                                        << tau << "\nFD =\n"
+                                                        << fd;
     }
 }
 
@@ -219,8 +221,8 @@ TEST(HenckyElastic, InitialiseFromStress) {
 // Linear elastic (Jaumann rate)
 
 std::unique_ptr<Material<3>> linearElastic(double E, double nu) {
-    return Material<3>::create(parse("type: linearElastic\ndensity: 2000\nE: " +
-                                     std::to_string(E) + "\nnu: " + std::to_string(nu) + "\n"),
+    return Material<3>::create(parse("type: linearElastic\ndensity: 2000\nE: " + std::to_string(E) +
+                                     "\nnu: " + std::to_string(nu) + "\n"),
                                "m");
 }
 

@@ -38,7 +38,8 @@ double inertiaFactor(const std::string& kernel) {
                                         : CubicBSplineKernel::InertiaFactor;
 }
 
-template <int dim> Dictionary gridDict() {
+template <int dim>
+Dictionary gridDict() {
     // A box away from the coordinate origin, so that angular momentum about it is not trivial.
     const std::string text =
         dim == 2 ? "bounds: {min: [-0.5, 0.25], max: [0.5, 1.25]}\ncellSize: 0.0625\n"
@@ -48,7 +49,8 @@ template <int dim> Dictionary gridDict() {
     return Dictionary::fromString(text, "constant/grid");
 }
 
-template <int dim> std::unique_ptr<Transfer<dim>> makeTransfer(const Scheme& s) {
+template <int dim>
+std::unique_ptr<Transfer<dim>> makeTransfer(const Scheme& s) {
     return Transfer<dim>::create(
         Dictionary::fromString("kernel: " + s.kernel + "\ntransfer: " + s.transfer + "\n",
                                "system/mpmSchemes"),
@@ -68,12 +70,14 @@ Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed, bool af
         }
         p.C[i] = Mat<dim>::Zero();
         if (affine)
-            for (int k = 0; k < dim * dim; ++k) p.C[i](k) = 5.0 * s(rng);
+            for (int k = 0; k < dim * dim; ++k)
+                p.C[i](k) = 5.0 * s(rng);
         p.L[i] = Mat<dim>::Zero();
         p.F[i] = Mat<dim>::Identity();
         p.be[i] = Mat3::Identity();
         Mat3 sig;
-        for (int k = 0; k < 9; ++k) sig(k) = 1e3 * s(rng);
+        for (int k = 0; k < 9; ++k)
+            sig(k) = 1e3 * s(rng);
         p.stress[i] = 0.5 * (sig + sig.transpose());
         p.mass[i] = 0.5 + 1.5 * u(rng);
         p.volume0[i] = p.volume[i] = 1e-3 * (0.5 + u(rng));
@@ -84,7 +88,8 @@ Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed, bool af
     return p;
 }
 
-template <int dim> void clearGrid(Grid<dim>& g) {
+template <int dim>
+void clearGrid(Grid<dim>& g) {
     std::fill(g.mass.begin(), g.mass.end(), 0.0);
     std::fill(g.momentum.begin(), g.momentum.end(), Vec<dim>::Zero());
     std::fill(g.force.begin(), g.force.end(), Vec<dim>::Zero());
@@ -101,14 +106,16 @@ void p2g(Transfer<dim>& t, const Particles<dim>& p, Grid<dim>& g, BlockSort<dim>
 }
 
 /// v = vOld = momentum / mass (zero where there is no mass).
-template <int dim> void gridVelocityFromMomentum(Grid<dim>& g) {
+template <int dim>
+void gridVelocityFromMomentum(Grid<dim>& g) {
     for (Index k = 0; k < g.numNodes(); ++k) {
         g.v[k] = g.mass[k] > 0 ? Vec<dim>(g.momentum[k] / g.mass[k]) : Vec<dim>::Zero();
         g.vOld[k] = g.v[k];
     }
 }
 
-template <int dim> Vec<dim> nodePos(const Grid<dim>& g, Index k) {
+template <int dim>
+Vec<dim> nodePos(const Grid<dim>& g, Index k) {
     IVec<dim> c;
     for (int d = 0; d < dim; ++d) {
         c[d] = static_cast<int>(k % g.nodes()[d]);
@@ -117,7 +124,8 @@ template <int dim> Vec<dim> nodePos(const Grid<dim>& g, Index k) {
     return g.nodePosition(c);
 }
 
-template <int dim> Vec3 to3(const Vec<dim>& a) {
+template <int dim>
+Vec3 to3(const Vec<dim>& a) {
     Vec3 r = Vec3::Zero();
     r.template head<dim>() = a;
     return r;
@@ -125,7 +133,8 @@ template <int dim> Vec3 to3(const Vec<dim>& a) {
 
 /// ε : Bᵀ, the angular momentum carried by the affine part B = C D of an APIC particle
 /// (Jiang et al. 2015): (ε:Bᵀ)_α = ε_αβγ B_γβ.
-template <int dim> Vec3 affineSpin(const Mat<dim>& B) {
+template <int dim>
+Vec3 affineSpin(const Mat<dim>& B) {
     Mat3 b = Mat3::Zero();
     b.template topLeftCorner<dim, dim>() = B;
     return Vec3(b(2, 1) - b(1, 2), b(0, 2) - b(2, 0), b(1, 0) - b(0, 1));
@@ -139,7 +148,8 @@ struct Totals {
 };
 
 /// Particle totals; with APIC (inertia > 0) the affine angular momentum m ε:(C D)ᵀ is added.
-template <int dim> Totals particleTotals(const Particles<dim>& p, double inertia, double h) {
+template <int dim>
+Totals particleTotals(const Particles<dim>& p, double inertia, double h) {
     Totals t;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double m = p.mass[i];
@@ -157,7 +167,8 @@ template <int dim> Totals particleTotals(const Particles<dim>& p, double inertia
 }
 
 /// Grid totals from mass and momentum.
-template <int dim> Totals gridTotals(const Grid<dim>& g) {
+template <int dim>
+Totals gridTotals(const Grid<dim>& g) {
     Totals t;
     for (Index k = 0; k < g.numNodes(); ++k) {
         t.mass += g.mass[k];
@@ -168,7 +179,8 @@ template <int dim> Totals gridTotals(const Grid<dim>& g) {
 }
 
 /// Grid totals from mass and velocity: Σ m_i v_i, Σ x_i × m_i v_i.
-template <int dim> Totals gridVelocityTotals(const Grid<dim>& g) {
+template <int dim>
+Totals gridVelocityTotals(const Grid<dim>& g) {
     Totals t;
     for (Index k = 0; k < g.numNodes(); ++k) {
         t.mass += g.mass[k];
@@ -192,7 +204,8 @@ void expectSame(const Totals& a, const Totals& b, double scale, bool angular, co
 
 // ---------------------------------------------------------------------------------------------
 
-template <int dim> void checkScatterConservesMassAndMomentum(int n) {
+template <int dim>
+void checkScatterConservesMassAndMomentum(int n) {
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
         Grid<dim> g(gridDict<dim>());
@@ -206,17 +219,23 @@ template <int dim> void checkScatterConservesMassAndMomentum(int n) {
         const Totals gt = gridTotals(g);
         // Angular momentum is conserved by APIC only.
         expectSame(pt, gt, pt.scale, apic, "P2G");
-        for (Index k = 0; k < g.numNodes(); ++k) ASSERT_GE(g.mass[k], 0.0);
+        for (Index k = 0; k < g.numNodes(); ++k)
+            ASSERT_GE(g.mass[k], 0.0);
     }
 }
 
-TEST(Transfer, ScatterConservesMassAndMomentum2D) { checkScatterConservesMassAndMomentum<2>(2000); }
+TEST(Transfer, ScatterConservesMassAndMomentum2D) {
+    checkScatterConservesMassAndMomentum<2>(2000);
+}
 
-TEST(Transfer, ScatterConservesMassAndMomentum3D) { checkScatterConservesMassAndMomentum<3>(800); }
+TEST(Transfer, ScatterConservesMassAndMomentum3D) {
+    checkScatterConservesMassAndMomentum<3>(800);
+}
 
 /// P2G, grid velocity from momentum, G2P with dt = 0, P2G again: mass, linear momentum (all
 /// schemes) and angular momentum (APIC) are the same at every stage [Jiang et al. 2015].
-template <int dim> void checkRoundTrip(int n) {
+template <int dim>
+void checkRoundTrip(int n) {
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
         Grid<dim> g(gridDict<dim>());
@@ -244,12 +263,17 @@ template <int dim> void checkRoundTrip(int n) {
     }
 }
 
-TEST(Transfer, RoundTripConservesMomentum2D) { checkRoundTrip<2>(1500); }
+TEST(Transfer, RoundTripConservesMomentum2D) {
+    checkRoundTrip<2>(1500);
+}
 
-TEST(Transfer, RoundTripConservesMomentum3D) { checkRoundTrip<3>(600); }
+TEST(Transfer, RoundTripConservesMomentum3D) {
+    checkRoundTrip<3>(600);
+}
 
 /// Grid velocity set to the affine field a + A x on every node.
-template <int dim> void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, const Mat<dim>& A) {
+template <int dim>
+void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, const Mat<dim>& A) {
     for (Index k = 0; k < g.numNodes(); ++k) {
         g.v[k] = a + A * nodePos(g, k);
         g.vOld[k] = g.v[k];
@@ -257,7 +281,8 @@ template <int dim> void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, c
     }
 }
 
-template <int dim> Mat<dim> rotationRate(double omega) {
+template <int dim>
+Mat<dim> rotationRate(double omega) {
     Mat<dim> W = Mat<dim>::Zero();
     if constexpr (dim == 2) {
         W(0, 1) = -omega;
@@ -270,7 +295,8 @@ template <int dim> Mat<dim> rotationRate(double omega) {
     return W;
 }
 
-template <int dim> void checkRigidRotationReproducedByApic() {
+template <int dim>
+void checkRigidRotationReproducedByApic() {
     for (const char* kernel : {"quadraticBSpline", "cubicBSpline"}) {
         SCOPED_TRACE(kernel);
         Grid<dim> g(gridDict<dim>());
@@ -288,18 +314,25 @@ template <int dim> void checkRigidRotationReproducedByApic() {
     }
 }
 
-TEST(Transfer, ApicReproducesRigidRotation2D) { checkRigidRotationReproducedByApic<2>(); }
+TEST(Transfer, ApicReproducesRigidRotation2D) {
+    checkRigidRotationReproducedByApic<2>();
+}
 
-TEST(Transfer, ApicReproducesRigidRotation3D) { checkRigidRotationReproducedByApic<3>(); }
+TEST(Transfer, ApicReproducesRigidRotation3D) {
+    checkRigidRotationReproducedByApic<3>();
+}
 
 /// Every scheme interpolates an affine grid field exactly (PIC/APIC velocity, L everywhere).
-template <int dim> void checkAffineFieldInterpolation() {
+template <int dim>
+void checkAffineFieldInterpolation() {
     std::mt19937_64 rng(8);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Vec<dim> a;
     Mat<dim> A;
-    for (int d = 0; d < dim; ++d) a[d] = u(rng);
-    for (int k = 0; k < dim * dim; ++k) A(k) = u(rng);
+    for (int d = 0; d < dim; ++d)
+        a[d] = u(rng);
+    for (int k = 0; k < dim * dim; ++k)
+        A(k) = u(rng);
     for (const Scheme& s : allSchemes()) {
         if (s.transfer == "flip") continue; // FLIP keeps the particle's own velocity
         SCOPED_TRACE(s.kernel + " " + s.transfer);
@@ -322,18 +355,25 @@ template <int dim> void checkAffineFieldInterpolation() {
     }
 }
 
-TEST(Transfer, AffineFieldInterpolatedExactly2D) { checkAffineFieldInterpolation<2>(); }
+TEST(Transfer, AffineFieldInterpolatedExactly2D) {
+    checkAffineFieldInterpolation<2>();
+}
 
-TEST(Transfer, AffineFieldInterpolatedExactly3D) { checkAffineFieldInterpolation<3>(); }
+TEST(Transfer, AffineFieldInterpolatedExactly3D) {
+    checkAffineFieldInterpolation<3>();
+}
 
-template <int dim> void checkUniformVelocityPreserved() {
+template <int dim>
+void checkUniformVelocityPreserved() {
     Vec<dim> u0;
-    for (int d = 0; d < dim; ++d) u0[d] = 0.3 - 0.7 * d;
+    for (int d = 0; d < dim; ++d)
+        u0[d] = 0.3 - 0.7 * d;
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
         Grid<dim> g(gridDict<dim>());
         Particles<dim> p = randomParticles(g, 500, 9, false);
-        for (auto& v : p.v) v = u0;
+        for (auto& v : p.v)
+            v = u0;
         auto t = makeTransfer<dim>(s);
         BlockSort<dim> sort;
         for (int cycle = 0; cycle < 2; ++cycle) {
@@ -351,9 +391,13 @@ template <int dim> void checkUniformVelocityPreserved() {
     }
 }
 
-TEST(Transfer, UniformVelocityPreservedByRoundTrip2D) { checkUniformVelocityPreserved<2>(); }
+TEST(Transfer, UniformVelocityPreservedByRoundTrip2D) {
+    checkUniformVelocityPreserved<2>();
+}
 
-TEST(Transfer, UniformVelocityPreservedByRoundTrip3D) { checkUniformVelocityPreserved<3>(); }
+TEST(Transfer, UniformVelocityPreservedByRoundTrip3D) {
+    checkUniformVelocityPreserved<3>();
+}
 
 TEST(Transfer, GatherMovesParticlesWithPicVelocity) {
     Grid<2> g(gridDict<2>());
@@ -363,7 +407,8 @@ TEST(Transfer, GatherMovesParticlesWithPicVelocity) {
     t->computeWeights(p, g);
     const Vec<2> a(0.5, -0.25);
     setAffineGridVelocity<2>(g, a, Mat<2>::Zero());
-    for (auto& v : g.vOld) v = Vec<2>::Zero(); // FLIP increment a; PIC velocity a
+    for (auto& v : g.vOld)
+        v = Vec<2>::Zero(); // FLIP increment a; PIC velocity a
     const double dt = 1e-3;
     const GatherStats st = t->gather(p, g, dt, false);
     EXPECT_EQ(st.firstNonFinite, -1);
@@ -389,7 +434,8 @@ TEST(Transfer, ApicNeedsBSplineKernel) {
 }
 
 /// Scatter (with stress) with 1 and with 2 threads: bit-identical grid arrays.
-template <int dim> void checkScatterDeterministic(int n) {
+template <int dim>
+void checkScatterDeterministic(int n) {
     const int threads = omp_get_max_threads();
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
@@ -409,9 +455,13 @@ template <int dim> void checkScatterDeterministic(int n) {
     }
 }
 
-TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads2D) { checkScatterDeterministic<2>(2000); }
+TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads2D) {
+    checkScatterDeterministic<2>(2000);
+}
 
-TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads3D) { checkScatterDeterministic<3>(800); }
+TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads3D) {
+    checkScatterDeterministic<3>(800);
+}
 
 TEST(Transfer, ScatterForceMatchesCombinedScatter) {
     // USF's separate force scatter adds the same force as USL's combined pass. The internal
