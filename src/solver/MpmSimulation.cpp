@@ -89,6 +89,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     : case_(cs), options_(options), grid_(gridDict) {
     gridDict.checkUnknownKeys();
     for (auto& r : reactions_) r.setZero();
+    for (const auto& f : grid_.faces()) hasOpenFace_ |= f.kind == FaceCondition::Kind::Open;
 
     if (cs.exists("constant/g")) {
         const Dictionary g = cs.read("constant/g");
@@ -410,6 +411,7 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
 
 template <int dim> void MpmSimulation<dim>::sortParticles() {
     ScopedTimer timer(times_.sort);
+    if (hasOpenFace_) removeOutflow();
     const Index outside = sort_.update(particles_, grid_);
     if (outside >= 0) fail("sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
@@ -420,6 +422,29 @@ template <int dim> void MpmSimulation<dim>::sortParticles() {
         buildMaterialLists();
     }
     transfer_->computeWeights(particles_, grid_);
+}
+
+template <int dim> void MpmSimulation<dim>::removeOutflow() {
+    // Particles more than one cell beyond an open face have left the domain: remove them,
+    // keeping the order of the others (deterministic).
+    const Index n = static_cast<Index>(particles_.size());
+    std::vector<Index> keep;
+    keep.reserve(n);
+    for (Index i = 0; i < n; ++i) {
+        bool out = false;
+        for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
+            if (grid_.faces()[f].kind != FaceCondition::Kind::Open) continue;
+            const int a = f / 2;
+            out |= f % 2 == 0 ? particles_.x[i][a] < grid_.lo()[a] - grid_.h()
+                              : particles_.x[i][a] > grid_.hi()[a] + grid_.h();
+        }
+        if (!out) keep.push_back(i);
+    }
+    if (static_cast<Index>(keep.size()) == n) return;
+    if (keep.empty()) throw RunError("every particle has left the domain through open faces");
+    particles_.permute(keep);
+    buildMaterialLists();
+    removed_ += n - static_cast<Index>(keep.size());
 }
 
 template <int dim> void MpmSimulation<dim>::particleToGrid() {
@@ -732,6 +757,7 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     line("IO", times_.io);
     line("total", total);
     const double pups = stepWall_ > 0 ? particles_.size() * steps_ / stepWall_ : 0.0;
+    if (removed_ > 0) os << removed_ << " particles left through open faces and were removed\n";
     os << std::defaultfloat << std::setprecision(4) << "Particle-updates per second: " << pups
        << " (" << pups / 1e6 << " M)\n";
 }

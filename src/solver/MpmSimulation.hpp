@@ -45,6 +45,7 @@ private:
 
     // Phases of a step.
     void sortParticles();
+    void removeOutflow();
     void particleToGrid();
     void gridVelocity();
     void updateStress(double dt);
@@ -77,6 +78,8 @@ private:
     std::unique_ptr<Transfer<dim>> transfer_;
     BlockSort<dim> sort_;
     bool usf_ = false;
+    bool hasOpenFace_ = false;
+    Index removed_ = 0;
     double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
     std::vector<Index> activeBlocks_;
     std::array<Vec<dim>, 2 * dim> reactions_;
