@@ -559,6 +559,7 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
     const Vec<dim> g = gravity_;
     const double alpha = damping_;
     const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
+    const std::vector<char>& constrained = grid_.constrained();
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < static_cast<Index>(blocks.size()); ++k) {
         const IVec<dim> c = grid_.blockCoord(blocks[k]);
@@ -575,7 +576,9 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
                 // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
                 const Vec<dim> v0 = grid_.momentum[node] / m;
                 Vec<dim> f = grid_.force[node] + m * g;
-                if (damped) // local non-viscous damping: f ← f - α |f| sign(v), per component
+                // Local non-viscous damping f ← f - α |f| sign(v), per component; not on
+                // wall-constrained nodes, whose force is the wall reaction.
+                if (damped && !constrained[node])
                     for (int a = 0; a < dim; ++a)
                         f[a] -= alpha * std::fabs(f[a]) * ((v0[a] > 0) - (v0[a] < 0));
                 grid_.vOld[node] = v0;

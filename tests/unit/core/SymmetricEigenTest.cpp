@@ -136,28 +136,37 @@ std::vector<Mat3> mixedMatrices(std::mt19937_64& rng, int count) {
     std::vector<Mat3> m;
     for (int i = 0; i < count; ++i) {
         switch (i % 6) {
-        case 0: m.push_back(randomSymmetric(rng, 1.0)); break;
+        case 0:
+            m.push_back(randomSymmetric(rng, 1.0));
+            break;
         case 1: {
             const Mat3 R = randomRotation(rng);
             Mat3 A = R * Vec3(1.0, 1.0, 2.0).asDiagonal() * R.transpose();
             m.push_back(0.5 * (A + A.transpose()));
             break;
         }
-        case 2: m.push_back(Vec3(3.0, -1.0, 2.0).asDiagonal()); break;
-        case 3: m.push_back(i % 12 == 3 ? Mat3::Zero() : Mat3::Identity()); break;
+        case 2:
+            m.push_back(Vec3(3.0, -1.0, 2.0).asDiagonal());
+            break;
+        case 3:
+            m.push_back(i % 12 == 3 ? Mat3(Mat3::Zero()) : Mat3(Mat3::Identity()));
+            break;
         case 4: {
             Mat3 A;
             A << 1.0, 1e-200, 1e-310, 1e-200, 1.0, -1e-20, 1e-310, -1e-20, 2.0;
             m.push_back(A);
             break;
         }
-        default: m.push_back(randomSymmetric(rng, 1e4)); break;
+        default:
+            m.push_back(randomSymmetric(rng, 1e4));
+            break;
         }
     }
     return m;
 }
 
-template <int Lanes> void checkBatch(unsigned seed) {
+template <int Lanes>
+void checkBatch(unsigned seed) {
     std::mt19937_64 rng(seed);
     for (int trial = 0; trial < 50; ++trial) {
         std::vector<Mat3> A = mixedMatrices(rng, Lanes);
@@ -169,9 +178,9 @@ template <int Lanes> void checkBatch(unsigned seed) {
             SCOPED_TRACE(l);
             const double norm = std::max(A[l].norm(), 1e-300);
             EXPECT_LE((Q[l].transpose() * Q[l] - Mat3::Identity()).cwiseAbs().maxCoeff(), 1e-14)
-                << "A =\n" << A[l];
-            EXPECT_LE((fromEigen(Q[l], lambda[l]) - A[l]).norm(), 1e-13 * norm)
-                << "A =\n" << A[l];
+                << "A =\n"
+                << A[l];
+            EXPECT_LE((fromEigen(Q[l], lambda[l]) - A[l]).norm(), 1e-13 * norm) << "A =\n" << A[l];
             // Same spectrum as the scalar solver.
             Vec3 ref;
             Mat3 Qref;
@@ -184,9 +193,13 @@ template <int Lanes> void checkBatch(unsigned seed) {
     }
 }
 
-TEST(SymmetricEigen, BatchOfFourMatchesScalar) { checkBatch<4>(21); }
+TEST(SymmetricEigen, BatchOfFourMatchesScalar) {
+    checkBatch<4>(21);
+}
 
-TEST(SymmetricEigen, BatchOfEightMatchesScalar) { checkBatch<8>(22); }
+TEST(SymmetricEigen, BatchOfEightMatchesScalar) {
+    checkBatch<8>(22);
+}
 
 TEST(SymmetricEigen, BatchLaneIndependentOfNeighbours) {
     // A lane's result does not depend on what the other lanes hold beyond round-off.

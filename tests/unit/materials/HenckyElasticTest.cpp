@@ -14,6 +14,7 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace mpm {
 namespace {
@@ -215,6 +216,95 @@ TEST(HenckyElastic, InitialiseFromStress) {
     EXPECT_EQ(p.stress[0], sigma0);
     EXPECT_LE((HenckyElastic<3>::kirchhoff(ElasticConstants(1e7, 0.3), p.be[0]) - sigma0).norm(),
               1e-9 * sigma0.norm());
+}
+
+/// updateStress (batched, vectorised) against the scalar formulas: bᵉ ← f bᵉ fᵀ with
+/// f = 1 + Δt L, σ = τ(bᵉ) / J with J = V / V⁰, for particle counts that are not multiples of
+/// the batch width and ids in any order.
+template <int dim>
+void checkHenckyUpdate(int n, unsigned seed) {
+    const ElasticConstants c(2e7, 0.3);
+    const auto m =
+        Material<dim>::create(parse("type: henckyElastic\ndensity: 2000\nE: 2e7\nnu: 0.3\n"), "m");
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.8, 1.2);
+    Particles<dim> p;
+    p.resize(n + 3);
+    std::vector<Index> ids;
+    for (int i = 0; i < n + 3; ++i) {
+        const Mat3 F = Mat3::Identity() + randomMatrix(rng, 0.2);
+        p.be[i] = F * F.transpose();
+        p.L[i] = randomMatrix(rng, 10.0).template topLeftCorner<dim, dim>();
+        p.F[i] = Mat<dim>::Identity();
+        p.volume0[i] = 1e-3;
+        p.volume[i] = 1e-3 * u(rng);
+        p.stress[i] = Mat3::Zero();
+        if (i % 7 != 3) ids.push_back(i); // some particles belong to another material
+    }
+    std::shuffle(ids.begin(), ids.end(), rng);
+    const Particles<dim> before = p;
+    const double dt = 1e-3;
+    ASSERT_EQ(m->updateStress(p, ids, dt), -1);
+    std::vector<bool> updated(p.size(), false);
+    for (Index i : ids)
+        updated[i] = true;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        SCOPED_TRACE(i);
+        if (!updated[i]) {
+            EXPECT_EQ(p.be[i], before.be[i]);
+            EXPECT_EQ(p.stress[i], before.stress[i]);
+            continue;
+        }
+        const Mat3 f = Mat3::Identity() + dt * embed3<dim>(before.L[i]);
+        const Mat3 be = f * before.be[i] * f.transpose();
+        EXPECT_LE((p.be[i] - be).norm(), 1e-14 * be.norm());
+        const Mat3 sigma =
+            HenckyElastic<3>::kirchhoff(c, be) * (before.volume0[i] / before.volume[i]);
+        EXPECT_LE((p.stress[i] - sigma).norm(), 1e-11 * sigma.norm()) << p.stress[i] << "\n"
+                                                                      << sigma;
+        EXPECT_LE((p.stress[i] - p.stress[i].transpose()).norm(), 1e-12 * sigma.norm());
+    }
+    EXPECT_EQ(m->updateStress(p, {}, dt), -1);
+}
+
+TEST(HenckyElastic, UpdateStressMatchesScalarFormulas3D) {
+    for (int n : {1, 7, 8, 9, 30})
+        checkHenckyUpdate<3>(n, 40 + n);
+}
+
+TEST(HenckyElastic, UpdateStressMatchesScalarFormulas2D) {
+    for (int n : {1, 5, 16, 21})
+        checkHenckyUpdate<2>(n, 50 + n);
+}
+
+TEST(HenckyElastic, UpdateStressReportsNonFiniteParticle) {
+    const auto m =
+        Material<3>::create(parse("type: henckyElastic\ndensity: 2000\nE: 1e7\nnu: 0.3\n"), "m");
+    Particles<3> p;
+    p.resize(12);
+    for (int i = 0; i < 12; ++i) {
+        m->initialise(p, i, Mat3::Zero());
+        p.L[i] = Mat3::Zero();
+        p.F[i] = Mat3::Identity();
+        p.volume[i] = p.volume0[i] = 1.0;
+    }
+    p.L[9](0, 1) = std::nan("");
+    EXPECT_EQ(m->updateStress(p, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, 1e-3), 9);
+    EXPECT_EQ(m->updateStress(p, {11, 10, 9}, 1e-3), 9);
+}
+
+TEST(HenckyElastic, StrainEnergyUsesReferenceVolume) {
+    const auto m =
+        Material<3>::create(parse("type: henckyElastic\ndensity: 2000\nE: 1e7\nnu: 0.3\n"), "m");
+    Particles<3> p;
+    p.resize(1);
+    const Vec3 eps(0.01, -0.02, 0.005);
+    p.be[0] = (2.0 * eps).array().exp().matrix().asDiagonal();
+    p.volume0[0] = 2.0;
+    p.volume[0] = 3.0;
+    const ElasticConstants c(1e7, 0.3);
+    EXPECT_NEAR(m->strainEnergy(p, 0), 2.0 * HenckyElastic<3>::energyDensity(c, p.be[0]),
+                1e-12 * m->strainEnergy(p, 0));
 }
 
 // ---------------------------------------------------------------------------------------------
