@@ -88,11 +88,6 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
         }
     }
 
-    constrained_.assign(numNodes_, 0);
-    for (int f = 0; f < NumFaces; ++f)
-        if (faces_[f].kind != FaceCondition::Kind::Open)
-            for (Index k : faceNodes_[f]) constrained_[k] = 1;
-
     mass.assign(numNodes_, 0.0);
     momentum.assign(numNodes_, Vec<dim>::Zero());
     force.assign(numNodes_, Vec<dim>::Zero());

@@ -77,8 +77,6 @@ public:
     static std::string faceName(int f);
     /// Nodes on or outside face f (within the ghost layers): the nodes its condition acts on.
     const std::vector<Index>& faceNodes(int f) const { return faceNodes_[f]; }
-    /// 1 for nodes on or beyond a face that is not open (their velocity is constrained).
-    const std::vector<char>& constrained() const { return constrained_; }
 
     // Node fields (SoA). vOld is the P2G velocity, v the updated one.
     std::vector<double> mass;
@@ -95,7 +93,6 @@ private:
     Index numNodes_ = 0, numBlocks_ = 0;
     std::array<FaceCondition, NumFaces> faces_;
     std::array<std::vector<Index>, NumFaces> faceNodes_;
-    std::vector<char> constrained_;
 };
 
 } // namespace mpm

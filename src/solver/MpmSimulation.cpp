@@ -493,7 +493,11 @@ template <int dim> void MpmSimulation<dim>::applyBoundaryConditions(bool recordR
                 const double m = grid_.mass[i];
                 if (m == 0) continue;
                 Vec<dim>& v = vel[i];
-                const Vec<dim> before = v;
+                // The reaction balances the physical forces on the node: measure it from the
+                // undamped update v⁰ + Δt (f/m + g), not from the (locally damped) v.
+                const Vec<dim> before =
+                    recordReactions ? Vec<dim>(grid_.vOld[i] + dt * (grid_.force[i] / m + gravity_))
+                                    : v;
                 const double vn = sign * v[axis]; // > 0: into the wall
                 switch (fc.kind) {
                 case FaceCondition::Kind::NoSlip:
@@ -559,7 +563,6 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
     const Vec<dim> g = gravity_;
     const double alpha = damping_;
     const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
-    const std::vector<char>& constrained = grid_.constrained();
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < static_cast<Index>(blocks.size()); ++k) {
         const IVec<dim> c = grid_.blockCoord(blocks[k]);
@@ -576,9 +579,8 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
                 // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
                 const Vec<dim> v0 = grid_.momentum[node] / m;
                 Vec<dim> f = grid_.force[node] + m * g;
-                // Local non-viscous damping f ← f - α |f| sign(v), per component; not on
-                // wall-constrained nodes, whose force is the wall reaction.
-                if (damped && !constrained[node])
+                // Local non-viscous damping f ← f - α |f| sign(v), per component.
+                if (damped)
                     for (int a = 0; a < dim; ++a)
                         f[a] -= alpha * std::fabs(f[a]) * ((v0[a] > 0) - (v0[a] < 0));
                 grid_.vOld[node] = v0;
