@@ -52,6 +52,11 @@ public:
     /// Stored elastic energy of particle i [J] (per metre of depth in 2D).
     virtual double strainEnergy(const Particles<dim>& p, Index i) const = 0;
 
+    /// Trans-phase critical density ρ_c [kg/m³] [000 Eq. 10, 18–19]: a point whose current
+    /// density ρ_p = m_p/V_p is below ρ_c is gasified (grains out of contact, bulk modulus 0):
+    /// it carries no stress and takes no coupling contact force. 0 (the default): never.
+    virtual double criticalDensity() const { return 0.0; }
+
     /// Build the material named `name` from its dictionary (`type:` picks the model).
     static std::unique_ptr<Material> create(const Dictionary& dict, const std::string& name);
 

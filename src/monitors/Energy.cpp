@@ -4,8 +4,9 @@
 
 namespace mpm {
 
-/// `type: energy`: kinetic Σ ½ m v², strain Σ ψ V (each material's stored energy),
-/// gravitational -Σ m g·x (zero at the origin) and their total [J] (per metre in 2D).
+/// `type: energy`: kinetic Σ ½ m v² (+ rigid bodies' ½ m v² + ½ ωᵀIω), strain Σ ψ V (each
+/// material's stored energy), gravitational -Σ m g·x of particles and bodies (zero at the
+/// origin) and their total [J] (per metre in 2D).
 template <int dim> class Energy final : public FunctionObject<dim> {
 public:
     Energy(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {}
@@ -24,7 +25,13 @@ protected:
         });
         const double gravitational = deterministicSum(
             static_cast<Index>(p.size()), [&](Index i) { return -p.mass[i] * s.gravity.dot(p.x[i]); });
-        return {kinetic, strain, gravitational, kinetic + strain + gravitational};
+        double bodyKinetic = 0, bodyGravitational = 0;
+        for (const auto& b : s.bodies) {
+            bodyKinetic += b->kineticEnergy();
+            bodyGravitational -= b->mass() * s.gravity.dot(b->position());
+        }
+        const double k = kinetic + bodyKinetic, g = gravitational + bodyGravitational;
+        return {k, strain, g, k + strain + g};
     }
 };
 

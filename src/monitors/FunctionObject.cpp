@@ -16,7 +16,9 @@ FunctionObject<dim>::FunctionObject(const Dictionary& dict, std::string name)
                         : dict.getIntOr("writeInterval", 1, Bounds::closed(1, 2e9));
 }
 
-template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& time) {
+template <int dim>
+void FunctionObject<dim>::open(const Case& cs, const Time& time, const State<dim>& s) {
+    initialise(s, time);
     const auto dir = cs.path("postProcessing") / name_ / timeName(time.value(), 6);
     std::filesystem::create_directories(dir);
     out_.open(dir / (name_ + ".dat"));
@@ -40,6 +42,7 @@ template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, con
 }
 
 template <int dim> void FunctionObject<dim>::execute(const State<dim>& s, const Time& time) {
+    sample(s, time);
     long idx = 0;
     if (byTime_)
         idx = interval_ > 0 ? static_cast<long>(std::floor(time.value() / interval_ + 1e-8))

@@ -26,8 +26,8 @@ public:
     const std::string& name() const { return name_; }
 
     /// Open the output file (a restarted run opens a new <startTime> folder).
-    void open(const Case& cs, const Time& time);
-    /// Execute if the schedule says so.
+    void open(const Case& cs, const Time& time, const State<dim>& s);
+    /// Sample every step (sample()) and write a row if the schedule says so.
     void execute(const State<dim>& s, const Time& time);
     /// Execute now (the initial state).
     void executeNow(const State<dim>& s, const Time& time);
@@ -36,6 +36,10 @@ public:
     static std::vector<std::unique_ptr<FunctionObject>> createAll(const Dictionary& controlDict);
 
 protected:
+    /// Called every step before a possible write (for time averages); default: nothing.
+    virtual void sample(const State<dim>&, const Time&) {}
+    /// Called once when the output opens (e.g. to record the initial state).
+    virtual void initialise(const State<dim>&, const Time&) {}
     /// Column names after "time".
     virtual std::vector<std::string> columns(const State<dim>& s) const = 0;
     /// One row of values matching columns().

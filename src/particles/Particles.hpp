@@ -23,6 +23,7 @@ template <int dim> struct Particles {
     std::vector<double> volume0;    ///< V_p at seeding [m³]
     std::vector<double> volume;     ///< V_p = J V_p⁰ [m³]
     std::vector<double> plasticStrain; ///< accumulated plastic shear strain [-]
+    std::vector<double> slip;          ///< accumulated contact slip u_T [004 Eq. 37] [m]
     std::vector<Index> id;          ///< stable identity, kept across sorting and restart
     std::vector<int> material;      ///< index into the material list
 
@@ -35,7 +36,7 @@ template <int dim> struct Particles {
     /// Apply `f` to every per-particle array (sorting, compaction, resizing).
     template <class Fn> void forEachArray(Fn&& f) {
         f(x), f(v), f(C), f(L), f(F), f(be), f(stress);
-        f(mass), f(volume0), f(volume), f(plasticStrain), f(id), f(material);
+        f(mass), f(volume0), f(volume), f(plasticStrain), f(slip), f(id), f(material);
     }
 
     /// Reorder all arrays so that new particle k is old particle order[k] (order may be shorter

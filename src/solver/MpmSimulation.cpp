@@ -2,7 +2,9 @@
 #include "solver/MpmSimulation.hpp"
 
 #include "core/Log.hpp"
+#include "core/SymmetricEigen.hpp"
 #include "io/ParticleFile.hpp"
+#include "rigid/RigidBodyOutput.hpp"
 #include "particles/Region.hpp"
 #include "particles/Seeding.hpp"
 #include "solver/Reduce.hpp"
@@ -103,7 +105,12 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         materialNames_.push_back(name);
     }
     if (materials_.empty()) mats.error("", "no materials are defined");
-    for (const auto& m : materials_) maxWaveSpeed_ = std::max(maxWaveSpeed_, m->waveSpeed());
+    for (const auto& m : materials_) {
+        maxWaveSpeed_ = std::max(maxWaveSpeed_, m->waveSpeed());
+        waveOf_.push_back(m->waveSpeed());
+        criticalDensityOf_.push_back(m->criticalDensity());
+    }
+    readRigidBodies();
 
     const Dictionary schemes = cs.read("system/mpmSchemes");
     usf_ = schemes.getWordOr("stressUpdate", "USL", {"USF", "USL"}) == "USF";
@@ -112,6 +119,30 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
     schemes.checkUnknownKeys();
+}
+
+template <int dim> void MpmSimulation<dim>::readRigidBodies() {
+    if (!case_.exists("constant/rigidBodies")) return;
+    const Dictionary dict = case_.read("constant/rigidBodies");
+    std::vector<std::unique_ptr<CouplingLaw<dim>>> laws;
+    for (const std::string& name : dict.keys()) {
+        const Dictionary bd = dict.subDict(name);
+        // The coupling is read here (a body without `coupling` gets the barrier, no friction).
+        const Dictionary cd = bd.has("coupling")
+                                  ? bd.subDict("coupling")
+                                  : Dictionary::fromString("{type: barrier}", bd.fileName());
+        laws.push_back(CouplingLaw<dim>::create(cd, grid_.h()));
+        bodies_.push_back(std::make_unique<RigidBody<dim>>(bd, name));
+        const double r = bodies_.back()->shape().boundingRadius();
+        for (int d = 0; d < dim; ++d) {
+            const double x = bodies_.back()->position()[d];
+            if (x < grid_.lo()[d] || x > grid_.hi()[d])
+                bd.error("position", "the body's centre lies outside the grid bounds");
+        }
+        (void)r;
+    }
+    dict.checkUnknownKeys();
+    if (!bodies_.empty()) coupling_ = std::make_unique<Coupling<dim>>(std::move(laws));
 }
 
 template <int dim> void MpmSimulation<dim>::start(Time& time) {
@@ -146,6 +177,9 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
 
     maxSpeed_ = 0;
     for (const auto& v : particles_.v) maxSpeed_ = std::max(maxSpeed_, v.norm());
+    for (const auto& b : bodies_) maxSpeed_ = std::max(maxSpeed_, b->velocity().norm());
+    lightestMass_ = 1e300;
+    for (double m : particles_.mass) lightestMass_ = std::min(lightestMass_, m);
     checkDeltaT();
 
     // Energy budget for the blow-up check: what the initial state and gravity could supply.
@@ -159,15 +193,21 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     const double mass = deterministicSum(n, [&](Index i) { return particles_.mass[i]; });
     double extent = 0;
     for (int d = 0; d < dim; ++d) extent += std::fabs(gravity_[d]) * (grid_.hi()[d] - grid_.lo()[d]);
-    energyBudget_ = 10.0 * (kinetic + strain + mass * extent);
-    if (energyBudget_ <= 0) energyBudget_ = 1e300;
+    double bodyEnergy = 0;
+    bool driven = false;
+    for (const auto& b : bodies_) {
+        bodyEnergy += b->kineticEnergy() + b->mass() * extent;
+        driven |= b->motion() == Motion::Prescribed; // prescribed motion can do unbounded work
+    }
+    energyBudget_ = 10.0 * (kinetic + strain + mass * extent + bodyEnergy);
+    if (energyBudget_ <= 0 || driven) energyBudget_ = 1e300;
 
     if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
     (void)s;
 
     snapshot();
     if (options_.dryRun) return;
-    for (auto& f : functions_) f->open(case_, time);
+    for (auto& f : functions_) f->open(case_, time, state());
     if (fresh) {
         write();
         for (auto& f : functions_) f->executeNow(state(), time);
@@ -290,6 +330,7 @@ template <int dim> void MpmSimulation<dim>::seed() {
             particles_.volume0[i] = volume;
             particles_.volume[i] = volume;
             particles_.plasticStrain[i] = 0;
+            particles_.slip[i] = 0;
             particles_.id[i] = nextId++;
             particles_.material[i] = mat;
             Mat3 sigma0 = Mat3::Zero();
@@ -300,6 +341,17 @@ template <int dim> void MpmSimulation<dim>::seed() {
                 sigma0 = K0 * sv * Mat3::Identity() + (1.0 - K0) * sv * u * u.transpose();
             }
             materials_[mat]->initialise(particles_, static_cast<Index>(i), sigma0);
+            if (geostatic) {
+                // Start from the elastic stretch of the prestress, F = (bᵉ)^½, so that J < 1:
+                // the bed is compressed from its stress-free density like after a gravity
+                // preload, and a trans-phase material is not at its critical density.
+                Vec3 lam;
+                Mat3 Q;
+                symmetricEigen3(particles_.be[i], lam, Q);
+                const Mat3 V = fromEigen(Q, lam.cwiseSqrt());
+                particles_.F[i] = V.template topLeftCorner<dim, dim>();
+                particles_.volume[i] = volume * particles_.F[i].determinant();
+            }
         }
     }
     if (particles_.size() == 0) sets.error("", "constant/particles defines no particle sets");
@@ -330,6 +382,7 @@ template <int dim> void MpmSimulation<dim>::restart(const std::string& timeDir) 
     const auto& vol0 = need("initialVolume", 1);
     const auto& vol = need("volume", 1);
     const auto& eps = need("plasticStrain", 1);
+    const auto& slip = need("contactSlip", 1);
     const auto& F = need("deformationGradient", 9);
     const auto& be = need("elasticLeftCauchyGreen", 9);
     const auto& sig = need("stress", 9);
@@ -354,6 +407,7 @@ template <int dim> void MpmSimulation<dim>::restart(const std::string& timeDir) 
         particles_.volume0[i] = vol0.f64[i];
         particles_.volume[i] = vol.f64[i];
         particles_.plasticStrain[i] = eps.f64[i];
+        particles_.slip[i] = slip.f64[i];
         particles_.id[i] = id.i64[i];
         particles_.material[i] = static_cast<int>(mat.i64[i]);
         if (mat.i64[i] < 0 || mat.i64[i] >= static_cast<Index>(materials_.size()))
@@ -372,12 +426,15 @@ template <int dim> void MpmSimulation<dim>::buildMaterialLists() {
 }
 
 template <int dim> double MpmSimulation<dim>::stableDeltaT() const {
-    return time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+    double dt = grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+    if (coupling_) dt = std::min(dt, coupling_->stableDeltaT(lightestMass_, maxWaveSpeed_));
+    return time_->maxCo() * dt;
 }
 
 template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
     if (time_->adjustTimeStep()) return;
-    const double critical = grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+    double critical = grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+    if (coupling_) critical = std::min(critical, coupling_->stableDeltaT(lightestMass_, maxWaveSpeed_));
     if (time_->fixedDeltaT() <= critical) return;
     std::ostringstream os;
     os << "deltaT = " << time_->fixedDeltaT() << " s exceeds the stable limit h/(c + |v|max) = "
@@ -395,6 +452,7 @@ template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
 template <int dim> void MpmSimulation<dim>::step(double dt) {
     const double t0 = wallTime();
     sortParticles();
+    if (coupling_) couple(dt);
     particleToGrid();
     if (usf_) {
         gridVelocity();
@@ -404,6 +462,7 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
     gridUpdate(dt);
     gridToParticle(dt);
     if (!usf_) updateStress(dt);
+    if (!bodies_.empty()) advanceBodies(dt);
     stepWall_ += wallTime() - t0;
     ++steps_;
     if (steps_ % 20 == 0) snapshot();
@@ -422,6 +481,25 @@ template <int dim> void MpmSimulation<dim>::sortParticles() {
         buildMaterialLists();
     }
     transfer_->computeWeights(particles_, grid_);
+}
+
+template <int dim> void MpmSimulation<dim>::couple(double dt) {
+    ScopedTimer timer(times_.contact);
+    for (auto& b : bodies_) b->clearForces();
+    coupling_->computeForces(particles_, particles_.slip, bodies_, waveOf_, criticalDensityOf_,
+                             sort_, grid_, dt);
+}
+
+template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
+    ScopedTimer timer(times_.bodies);
+    for (auto& b : bodies_) b->advance(dt, time_->value() - dt, gravity_);
+    if (coupling_) {
+        coupling_->enforceGap(particles_, bodies_, sort_, grid_);
+        for (const auto& b : bodies_)
+            if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
+                throw RunError("step " + std::to_string(time_->index()) +
+                               ": rigid body '" + b->name() + "' has a non-finite state");
+    }
 }
 
 template <int dim> void MpmSimulation<dim>::removeOutflow() {
@@ -479,10 +557,17 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         });
     activeBlocks_ = sort_.activeNodeBlocks();
     transfer_->scatter(particles_, grid_, sort_, !usf_);
+    if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
+        transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
 }
 
 template <int dim> void MpmSimulation<dim>::applyBoundaryConditions(bool recordReactions, double dt) {
     std::vector<Vec<dim>>& vel = recordReactions ? grid_.v : grid_.vOld;
+    if (recordReactions) {
+        touched_.resize(grid_.numNodes(), 0);
+        for (int f = 0; f < Grid<dim>::NumFaces; ++f)
+            for (Index i : grid_.faceNodes(f)) touched_[i] = 0;
+    }
     for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
         const FaceCondition& fc = grid_.faces()[f];
         Vec<dim> reaction = Vec<dim>::Zero();
@@ -493,11 +578,14 @@ template <int dim> void MpmSimulation<dim>::applyBoundaryConditions(bool recordR
                 const double m = grid_.mass[i];
                 if (m == 0) continue;
                 Vec<dim>& v = vel[i];
-                // The reaction balances the physical forces on the node: measure it from the
-                // undamped update v⁰ + Δt (f/m + g), not from the (locally damped) v.
-                const Vec<dim> before =
-                    recordReactions ? Vec<dim>(grid_.vOld[i] + dt * (grid_.force[i] / m + gravity_))
-                                    : v;
+                // The reaction balances the physical forces on the node: the first face acting
+                // on a node measures it from the undamped update v⁰ + Δt (f/m + g), not from
+                // the (locally damped) v; a later face (edges, corners) from what is left.
+                Vec<dim> before = v;
+                if (recordReactions && !touched_[i]) {
+                    before = grid_.vOld[i] + dt * (grid_.force[i] / m + gravity_);
+                    touched_[i] = 1;
+                }
                 const double vn = sign * v[axis]; // > 0: into the wall
                 switch (fc.kind) {
                 case FaceCondition::Kind::NoSlip:
@@ -597,6 +685,7 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     ScopedTimer timer(times_.g2p);
     const GatherStats st = transfer_->gather(particles_, grid_, dt, !usf_);
+    if (coupling_) coupling_->applyLocalForces(particles_, dt);
     if (st.firstNonFinite >= 0) fail("G2P", st.firstNonFinite, "has a velocity that is not finite");
     maxSpeed_ = st.maxSpeed;
     if (maxSpeed_ * dt > grid_.h()) {
@@ -672,6 +761,7 @@ template <int dim> void MpmSimulation<dim>::write() {
     auto& volume = f64("volume", 1);
     auto& mass = f64("mass", 1);
     auto& plastic = f64("plasticStrain", 1);
+    auto& slip = f64("contactSlip", 1);
     auto& vol0 = f64("initialVolume", 1);
     auto& F = f64("deformationGradient", 9);
     auto& be = f64("elasticLeftCauchyGreen", 9);
@@ -699,6 +789,7 @@ template <int dim> void MpmSimulation<dim>::write() {
         volume[i] = p.volume[i];
         mass[i] = p.mass[i];
         plastic[i] = p.plasticStrain[i];
+        slip[i] = p.slip[i];
         vol0[i] = p.volume0[i];
     }
 
@@ -709,19 +800,36 @@ template <int dim> void MpmSimulation<dim>::write() {
     fs::create_directories(tmp);
     io::writeVtu(tmp / "particles.vtu", cloud);
     time_->writeTimeDict(tmp);
+    if (!bodies_.empty()) {
+        writeRigidBodies(tmp / "rigidBodies.vtp", bodies_);
+        writeRigidBodyState(tmp / "uniform" / "rigidBodies", bodies_);
+    }
     fs::remove_all(dir);
     fs::rename(tmp, dir);
 
     if (!pvd_) pvd_ = std::make_unique<io::PvdIndex>(case_.path("particles.pvd"), time_->value());
     pvd_->add(time_->value(), name + "/particles.vtu");
+    if (!bodies_.empty()) {
+        if (!bodiesPvd_)
+            bodiesPvd_ =
+                std::make_unique<io::PvdIndex>(case_.path("rigidBodies.pvd"), time_->value());
+        bodiesPvd_->add(time_->value(), name + "/rigidBodies.vtp");
+    }
     for (const std::string& old : time_->wrote()) {
         fs::remove_all(case_.path(old));
         pvd_->remove(old + "/particles.vtu");
+        if (bodiesPvd_) bodiesPvd_->remove(old + "/rigidBodies.vtp");
     }
 }
 
 template <int dim> void MpmSimulation<dim>::snapshot() {
     good_ = particles_;
+    goodBodies_.clear();
+    for (const auto& b : bodies_) {
+        std::ostringstream os;
+        b->writeState(os);
+        goodBodies_.push_back(os.str());
+    }
     goodTime_ = time_->value();
     goodIndex_ = time_->index();
     goodDeltaT_ = time_->deltaT();
@@ -736,6 +844,8 @@ void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const st
        << ") " << what << '.';
     if (hasGood_ && !options_.dryRun) {
         particles_ = good_;
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            bodies_[b]->readState(Dictionary::fromString(goodBodies_[b], "snapshot"));
         time_->setStart(goodTime_, goodIndex_, goodDeltaT_);
         write();
         os << "\nThe last good state (step " << goodIndex_ << ", t = " << goodTime_
@@ -746,6 +856,7 @@ void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const st
 
 template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     const double total = stepWall_ + times_.io + times_.functions;
+    (void)0;
     auto line = [&](const char* name, double t) {
         os << "    " << std::left << std::setw(14) << name << std::right << std::setw(10)
            << std::fixed << std::setprecision(3) << t << " s " << std::setw(6)
@@ -754,10 +865,12 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     os << "\nPhase timing (" << steps_ << " steps, " << particles_.size() << " particles, "
        << omp_get_max_threads() << " threads):\n";
     line("sort", times_.sort);
+    if (coupling_) line("contact", times_.contact);
     line("P2G", times_.p2g);
     line("grid", times_.grid);
     line("G2P", times_.g2p);
     line("constitutive", times_.constitutive);
+    if (!bodies_.empty()) line("rigid bodies", times_.bodies);
     line("functions", times_.functions);
     line("IO", times_.io);
     line("total", total);

@@ -3,12 +3,14 @@
 
 #include "case/Case.hpp"
 #include "case/Time.hpp"
+#include "contact/Coupling.hpp"
 #include "grid/Grid.hpp"
 #include "io/PvdIndex.hpp"
 #include "materials/Material.hpp"
 #include "monitors/FunctionObject.hpp"
 #include "particles/BlockSort.hpp"
 #include "particles/Particles.hpp"
+#include "rigid/RigidBody.hpp"
 #include "solver/Simulation.hpp"
 #include "transfers/Transfer.hpp"
 
@@ -20,7 +22,8 @@ namespace mpm {
 
 /// Wall time spent in each phase of the step [s].
 struct PhaseTimes {
-    double sort = 0, p2g = 0, grid = 0, g2p = 0, constitutive = 0, io = 0, functions = 0;
+    double sort = 0, contact = 0, p2g = 0, grid = 0, g2p = 0, constitutive = 0, bodies = 0,
+           io = 0, functions = 0;
 };
 
 /// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of DESIGN §4.
@@ -52,8 +55,11 @@ private:
     void scatterInternalForce();
     void gridUpdate(double dt);
     void gridToParticle(double dt);
+    void couple(double dt);
+    void advanceBodies(double dt);
 
     // Set-up.
+    void readRigidBodies();
     void seed();
     void restart(const std::string& timeDir);
     void buildMaterialLists();
@@ -63,7 +69,9 @@ private:
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot();
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
-    State<dim> state() const { return {particles_, grid_, materials_, gravity_, reactions_}; }
+    State<dim> state() const {
+        return {particles_, grid_, materials_, gravity_, reactions_, bodies_};
+    }
 
     const Case& case_;
     RunOptions options_;
@@ -82,18 +90,24 @@ private:
     Index removed_ = 0;
     double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
     std::vector<Index> activeBlocks_;
+    std::vector<char> touched_; ///< face nodes already given a reaction this step
     std::array<Vec<dim>, 2 * dim> reactions_;
+    std::vector<std::unique_ptr<RigidBody<dim>>> bodies_;
+    std::unique_ptr<Coupling<dim>> coupling_;
+    std::vector<double> waveOf_, criticalDensityOf_; ///< per material
     std::vector<std::unique_ptr<FunctionObject<dim>>> functions_;
-    std::unique_ptr<io::PvdIndex> pvd_;
+    std::unique_ptr<io::PvdIndex> pvd_, bodiesPvd_;
 
     double maxSpeed_ = 0;
     double maxWaveSpeed_ = 0;
+    double lightestMass_ = 1e300;
     double energyBudget_ = 0;
     long steps_ = 0;
     double stepWall_ = 0;
     PhaseTimes times_;
 
     Particles<dim> good_;
+    std::vector<std::string> goodBodies_; ///< body states at the snapshot (writeState text)
     double goodTime_ = 0, goodDeltaT_ = 0;
     long goodIndex_ = 0;
     bool hasGood_ = false;

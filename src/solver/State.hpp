@@ -4,6 +4,7 @@
 #include "grid/Grid.hpp"
 #include "materials/Material.hpp"
 #include "particles/Particles.hpp"
+#include "rigid/RigidBody.hpp"
 
 #include <array>
 #include <memory>
@@ -19,6 +20,7 @@ template <int dim> struct State {
     const Vec<dim>& gravity;
     /// Force the material exerted on each grid face in the last step [N] (per metre in 2D).
     const std::array<Vec<dim>, 2 * dim>& reactions;
+    const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies;
 };
 
 } // namespace mpm

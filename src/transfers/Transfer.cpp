@@ -58,6 +58,14 @@ public:
         scatterImpl<false, true>(p, g, sort);
     }
 
+    void scatterPointForces(const std::vector<Index>& ids, const std::vector<Vec<dim>>& f,
+                            Grid<dim>& g) const override {
+        for (std::size_t k = 0; k < ids.size(); ++k)
+            forStencil(st_[ids[k]], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
+                g.force[node] += wgt * f[k];
+            });
+    }
+
     void velocityGradient(Particles<dim>& p, const Grid<dim>& g) override {
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();

@@ -37,6 +37,11 @@ public:
     /// P2G of the internal force alone (USF's second scatter).
     virtual void scatterForce(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& s) = 0;
 
+    /// Add external point forces f_k at particles ids[k] to the grid force: f_i += Σ w_ip f_p
+    /// (the coupling forces [000 Eq. 19–20]); serial, in list order (deterministic).
+    virtual void scatterPointForces(const std::vector<Index>& ids, const std::vector<Vec<dim>>& f,
+                                    Grid<dim>& g) const = 0;
+
     /// L_p = Σ_i v_i ⊗ ∇w_ip from the P2G velocity g.vOld (USF) [002 Eq. 75].
     virtual void velocityGradient(Particles<dim>& p, const Grid<dim>& g) = 0;
 

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "contact/CouplingLaw.hpp"
+#include "grid/Grid.hpp"
+#include "particles/BlockSort.hpp"
+#include "particles/Particles.hpp"
+#include "rigid/RigidBody.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace mpm {
+
+/// Particle–rigid-body coupling of all bodies (DESIGN §4, [000 §3], [004 §4]).
+///
+/// Per step: (1) broad phase — only particles in grid blocks overlapping a body's bounding
+/// sphere grown by r_p are tested; (2) narrow phase — the body's signed distance in its own
+/// frame [004 §4.2]; (3) the body's law gives the force on each point; the body receives
+/// −f and the torque r × (−f) [004 Eq. 41–42]. Forces of dense points go to the grid in P2G
+/// [000 Eq. 19–20]; a gasified point (ρ_p < ρ_c) keeps its force locally (its velocity changes
+/// by Δt f/m_p after G2P) and transfers nothing to the grid. After the bodies move, points of
+/// non-penetrating (barrier) bodies closer than ξ_min are projected back to ξ_min and lose
+/// their approaching normal velocity, so no point ever ends a step inside such a body.
+template <int dim> class Coupling {
+public:
+    /// `laws[b]` is body b's law (nullptr: not coupled).
+    explicit Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws);
+
+    bool empty() const { return laws_.empty(); }
+
+    /// Find contacts and their forces, and add −f and torques to the bodies (after their
+    /// clearForces()). `wave[m]` and `criticalDensity[m]` are per material.
+    void computeForces(const Particles<dim>& p, std::vector<double>& slip,
+                       const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
+                       const std::vector<double>& wave, const std::vector<double>& criticalDensity,
+                       const BlockSort<dim>& sort, const Grid<dim>& grid, double dt);
+
+    /// Points (dense) and their coupling forces to scatter into the grid this step.
+    const std::vector<Index>& gridPoints() const { return gridPoints_; }
+    const std::vector<Vec<dim>>& gridForces() const { return gridForces_; }
+
+    /// Apply the forces of gasified points to their own velocity (after G2P).
+    void applyLocalForces(Particles<dim>& p, double dt) const;
+
+    /// Project points closer than ξ_min to a non-penetrating body back out (after the bodies
+    /// advanced). Returns the number of points moved.
+    Index enforceGap(Particles<dim>& p, const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
+                     const BlockSort<dim>& sort, const Grid<dim>& grid) const;
+
+    /// Smallest gap ξ of any point to a coupled body after the last enforceGap (or +inf) [m],
+    /// and of the last computeForces [m].
+    double minimumGapSeen() const { return minGap_; }
+
+    /// The contact limit on Δt over all laws for the lightest point [000 Eq. 24].
+    double stableDeltaT(double lightestMass, double maxWave) const;
+
+    /// Number of points in contact in the last step.
+    Index numContacts() const { return numContacts_; }
+
+private:
+    /// Visit the particles of the blocks that overlap the ball (centre, radius).
+    template <class Fn>
+    void forParticlesNear(const Vec<dim>& centre, double radius, const BlockSort<dim>& sort,
+                          const Grid<dim>& grid, Fn&& fn) const;
+
+    std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
+    std::vector<Contact<dim>> contacts_;
+    std::vector<Vec<dim>> forces_;
+    std::vector<Index> gridPoints_, localPoints_;
+    std::vector<Vec<dim>> gridForces_, localForces_;
+    mutable double minGap_ = 1e300;
+    Index numContacts_ = 0;
+};
+
+} // namespace mpm

@@ -1,0 +1,268 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/FastMath.hpp"
+#include "core/SymmetricEigen.hpp"
+#include "materials/HenckyElastic.hpp"
+#include "materials/Material.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+// Cohesionless granular plasticity on Hencky elasticity, shared by DruckerPrager and MuI.
+//
+// Return map in principal logarithmic strain (multiplicative plasticity, F = Fᵉ Fᵖ [000 Eq. 3]).
+// bᵉ_tr = f bᵉ fᵀ, f = 1 + Δt L, is decomposed as Q diag(λ) Qᵀ; ε = ½ ln λ is the trial elastic
+// Hencky strain, coaxial with the Kirchhoff stress τ (isotropy). With ε_v = tr ε,
+// ε̂ = ε − (ε_v/3) 1 and n = ε̂/|ε̂| [000 Eq. 4–5]:
+//   τ = λ ε_v 1 + 2G ε = K ε_v 1 + 2G ε̂,   p = −K ε_v,   s = 2G ε̂,   q = √½ |s| = √2 G |ε̂|,
+// and the yield function is F = q − μ p [000 Eq. 6] (homogeneous of degree one in the stress, so
+// the same surface for τ and σ = τ/J).
+//
+// Flow rule: potential g = q − β p (β = μ of the dilation angle ψ by [000 Eq. 8]; β = 0 is
+// isochoric flow, β = μ associated flow). With ∂q/∂τ = s/(√2|s|) = n/√2 and ∂p/∂τ = −1/3,
+//   Δεᵖ = Δγ ∂g/∂τ = Δγ (n/√2 + (β/3) 1).
+// The exponential map of multiplicative plasticity (bᵉ = exp 2ε) makes the return additive in
+// the trial principal axes, ε = ε_tr − Δεᵖ:
+//   |ε̂| = |ε̂_tr| − Δγ/√2,   ε_v = ε_v,tr − β Δγ,   i.e.  q = q_tr − G Δγ,  p = p_tr + K β Δγ.
+// Δγ = √2 |Δε̂ᵖ| is the engineering plastic shear strain (simple shear: the plastic shear angle),
+// work-conjugate to q (s : Δε̂ᵖ = q Δγ); Particles::plasticStrain accumulates it.
+//  - ψ = 0: the flow is deviatoric; ε_v, hence det bᵉ and p, are unchanged by the return.
+//  - ψ > 0: plastic dilation tr Δεᵖ = β Δγ > 0; with the total deformation of the step given,
+//    the elastic volumetric strain ε_v (and det bᵉ) decreases and p rises by K β Δγ, which pushes
+//    the point to expand in the following steps.
+// Drucker–Prager consistency q_tr − G Δγ = μ (p_tr + K β Δγ) gives Δγ = F_tr / (G + μ K β).
+// From a compressive trial (p_tr > 0) the return keeps p > 0 and |ε̂| ≥ 0 (Δγ < q_tr/G since
+// (q_tr − μ p_tr) G < q_tr (G + μ K β)), so it never passes the apex: only a tensile trial
+// (ε_v ≥ 0, p ≤ 0) goes there (cohesionless: zero stress, bᵉ = 1, plastic strain += √2 |ε̂_tr|).
+//
+// Trans-phase relation [000 Eq. 10]: when ρ_p = m_p/V_p < ρ_c [000 Eq. 18] the point is
+// gasified: zero stress and bᵉ = 1 (it starts stress-free when it re-compacts); its plastic
+// strain is unchanged.
+
+namespace mpm {
+
+/// eˣ for |x| ≤ 700 (clamped outside), within about 1 ulp, written so that loops over it
+/// vectorise (no calls, no errno): x = k ln 2 + r with k = rint(x/ln 2), |r| ≤ ½ ln 2 (ln 2 split
+/// in two parts so that k ln 2 is exact), eʳ by its Taylor series to r¹³ (truncation < 5e-18),
+/// 2ᵏ built from the exponent bits.
+inline double fastExp(double x) {
+    x = x < -700.0 ? -700.0 : x;
+    x = x > 700.0 ? 700.0 : x;
+    const double k = std::nearbyint(x * 1.4426950408889634);
+    const double r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
+    double s = 1.0 / 6227020800.0;
+    s = s * r + 1.0 / 479001600.0;
+    s = s * r + 1.0 / 39916800.0;
+    s = s * r + 1.0 / 3628800.0;
+    s = s * r + 1.0 / 362880.0;
+    s = s * r + 1.0 / 40320.0;
+    s = s * r + 1.0 / 5040.0;
+    s = s * r + 1.0 / 720.0;
+    s = s * r + 1.0 / 120.0;
+    s = s * r + 1.0 / 24.0;
+    s = s * r + 1.0 / 6.0;
+    s = s * r + 0.5;
+    s = s * r + 1.0;
+    s = s * r + 1.0;
+    const std::uint64_t bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(k) + 1023)
+                               << 52;
+    double scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    return s * scale;
+}
+
+/// Drucker–Prager coefficient fitted to the compression corners of Mohr–Coulomb,
+/// μ = 2√3 sin φ / (3 − sin φ) [000 Eq. 8], for an angle φ in degrees.
+inline double frictionCoefficient(double angleDegrees) {
+    const double s = std::sin(angleDegrees * 3.14159265358979323846 / 180.0);
+    return 2.0 * std::sqrt(3.0) * s / (3.0 - s);
+}
+
+/// Rate-independent Drucker–Prager flow [000 Eq. 6–8] with potential g = q − β p.
+struct DruckerPragerFlow {
+    double mu;   ///< friction coefficient μ_s [-]
+    double beta; ///< dilatancy β [-] (0: isochoric)
+    double G;    ///< shear modulus [Pa]
+    double K;    ///< bulk modulus [Pa]
+
+    /// Plastic multiplier Δγ = F_tr/(G + μ K β) of a trial Kirchhoff state (q, p) [Pa]
+    /// (≤ 0: elastic). jInv = V⁰/V is unused (rate- and density-independent).
+    double multiplier(double q, double p, double /*jInv*/) const {
+        return (q - mu * p) / (G + mu * K * beta);
+    }
+};
+
+/// μ(I) rheology [000 Eq. 9] with isochoric flow: μ(I) = μ_s + (μ₂ − μ_s)/(I₀/I + 1),
+/// I = γ̇ᵖ √(d² ρ_s / p) with p the Cauchy pressure and γ̇ᵖ = Δγ/Δt the engineering plastic shear
+/// rate (Δγ = √2 |Δε̂ᵖ|, conjugate to q = √½ |s|; simple shear: the shear rate).
+struct MuIFlow {
+    static constexpr double beta = 0.0; ///< isochoric flow
+    double muS;       ///< static friction coefficient μ_s [-]
+    double dMu;       ///< μ₂ − μ_s [-]
+    double I0;        ///< I₀ [-]
+    double G;         ///< shear modulus [Pa]
+    double rateScale; ///< d √ρ_s / Δt [kg^½ m^-½ s⁻¹]: I = rateScale Δγ / √p
+
+    /// μ(I) [000 Eq. 9] (μ_s at I = 0).
+    double mu(double I) const { return muS + dMu * I / (I0 + I); }
+
+    /// Plastic multiplier Δγ of a trial Kirchhoff state (q, p) [Pa], p > 0, jInv = V⁰/V.
+    /// Consistency q_tr − G Δγ = μ(I) p with I = c Δγ, c = rateScale/√(p jInv), is, times
+    /// (I₀ + c Δγ) > 0, the quadratic G c Δγ² + B Δγ − F I₀ = 0 with F = q_tr − μ_s p,
+    /// B = G I₀ + c (Δμ p − F). The residual is strictly decreasing in Δγ, so for F > 0 there
+    /// is exactly one root, in (0, F/G]; it is taken in closed form without cancellation
+    /// (2 F I₀/(B + √D) for B > 0, (√D − B)/(2 G c) otherwise, D = B² + 4 G c F I₀). c = 0
+    /// (d → 0 or Δt → ∞) gives F/G, the Drucker–Prager return with μ_s. F ≤ 0 gives 0.
+    double multiplier(double q, double p, double jInv) const {
+        const double f0 = q - muS * p, f = f0 > 0.0 ? f0 : 0.0;
+        const double pc = p * jInv;
+        const double c = rateScale / std::sqrt(pc > 1e-300 ? pc : 1e-300);
+        const double b = G * I0 + c * (dMu * p - f);
+        const double sq = std::sqrt(b * b + 4.0 * G * c * f * I0);
+        return b > 0.0 ? 2.0 * f * I0 / (b + sq) : (sq - b) / (2.0 * G * c);
+    }
+};
+
+/// Advance bᵉ, σ and the plastic strain of `ids` over dt by the return map above with the
+/// yield/flow functor `Flow` (chosen at compile time: no per-particle virtual call or option
+/// branch). Flow provides `beta` and `multiplier(q, p, jInv)`. Particles go through in batches of
+/// 8 so that the eigen-decompositions and the return vectorise across particles, as in
+/// HenckyElastic. ρ_c = 0 turns the trans-phase relation off. Elastic points get exactly
+/// HenckyElastic's bᵉ. Returns the first particle whose state is not finite, or -1.
+template <int dim, class Flow>
+Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
+                            const ElasticConstants& c, double rhoC, const Flow& flow) {
+    constexpr int Lanes = 8;
+    const Index n = static_cast<Index>(ids.size());
+    const Index batches = (n + Lanes - 1) / Lanes;
+    const double lambda = c.lambda, twoG = 2.0 * c.G, K = c.K;
+    const double sqrt2 = std::sqrt(2.0), sqrt2G = sqrt2 * c.G;
+    Index bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+    for (Index b = 0; b < batches; ++b) {
+        Mat3 be[Lanes], Q[Lanes];
+        Vec3 lam[Lanes];
+        Index idx[Lanes];
+        alignas(64) double jInv[Lanes], rho[Lanes];
+        for (int l = 0; l < Lanes; ++l) {
+            const Index k = std::min(b * Lanes + l, n - 1);
+            const Index i = ids[k];
+            idx[l] = i;
+            const Mat3 f = Mat3::Identity() + dt * embed3<dim>(p.L[i]);
+            be[l] = f * p.be[i] * f.transpose();
+            jInv[l] = p.volume0[i] / p.volume[i];
+            rho[l] = p.mass[i] / p.volume[i];
+        }
+        symmetricEigen3Batch<Lanes>(be, lam, Q);
+        alignas(64) double tau[3][Lanes], lamNew[3][Lanes], dGamma[Lanes];
+        alignas(64) double state[Lanes]; // 0: elastic (trial bᵉ), 1: plastic, 2: stress-free
+#pragma omp simd
+        for (int l = 0; l < Lanes; ++l) {
+            const double e0 = 0.5 * fastLog(lam[l][0]);
+            const double e1 = 0.5 * fastLog(lam[l][1]);
+            const double e2 = 0.5 * fastLog(lam[l][2]);
+            const double ev = e0 + e1 + e2, evThird = ev / 3.0;
+            const double d0 = e0 - evThird, d1 = e1 - evThird, d2 = e2 - evThird;
+            const double dn = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+            const double q = sqrt2G * dn, pk = -K * ev;
+            const double m = flow.multiplier(q, pk, jInv[l]);
+            const double dg = m > 0.0 ? m : 0.0;
+            const bool plastic = dg > 0.0;
+            const bool gas = rho[l] < rhoC;
+            const bool stressFree = gas | (ev >= 0.0);
+            // ε = ε_v/3 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
+            const double ratio = 1.0 - dg / (sqrt2 * (dn > 1e-300 ? dn : 1e-300));
+            const double evNewThird = (ev - flow.beta * dg) / 3.0;
+            double n0 = plastic ? evNewThird + ratio * d0 : e0;
+            double n1 = plastic ? evNewThird + ratio * d1 : e1;
+            double n2 = plastic ? evNewThird + ratio * d2 : e2;
+            n0 = stressFree ? 0.0 : n0;
+            n1 = stressFree ? 0.0 : n1;
+            n2 = stressFree ? 0.0 : n2;
+            // τ = λ tr ε 1 + 2G ε [000 Eq. 4–5]; σ = τ/J with J = V/V⁰.
+            const double trn = n0 + n1 + n2;
+            tau[0][l] = (lambda * trn + twoG * n0) * jInv[l];
+            tau[1][l] = (lambda * trn + twoG * n1) * jInv[l];
+            tau[2][l] = (lambda * trn + twoG * n2) * jInv[l];
+            lamNew[0][l] = fastExp(2.0 * n0);
+            lamNew[1][l] = fastExp(2.0 * n1);
+            lamNew[2][l] = fastExp(2.0 * n2);
+            dGamma[l] = stressFree ? (gas ? 0.0 : sqrt2 * dn) : dg;
+            state[l] = stressFree ? 2.0 : (plastic ? 1.0 : 0.0);
+        }
+        for (int l = 0; l < Lanes; ++l) {
+            if (b * Lanes + l >= n) break;
+            const Index i = idx[l];
+            if (state[l] == 2.0) {
+                p.be[i].setIdentity();
+                p.stress[i].setZero();
+            } else {
+                p.be[i] = state[l] == 0.0
+                              ? be[l]
+                              : fromEigen(Q[l], Vec3(lamNew[0][l], lamNew[1][l], lamNew[2][l]));
+                p.stress[i] = fromEigen(Q[l], Vec3(tau[0][l], tau[1][l], tau[2][l]));
+            }
+            p.plasticStrain[i] += dGamma[l];
+            // The trial eigenvalues catch a non-finite L also where the point ends stress-free.
+            if (!std::isfinite(p.stress[i].sum() + lam[l].sum() + dGamma[l]))
+                bad = std::min(bad, b * Lanes + l);
+        }
+    }
+    return bad < n ? ids[bad] : -1;
+}
+
+/// Common part of the cohesionless granular models (DruckerPrager, MuI): Hencky elasticity in
+/// bᵉ [000 Eq. 4–5], the friction angle and the trans-phase relation [000 Eq. 10].
+/// Keys: density, E, nu, frictionAngle φ [deg] (0 < φ < 90), transPhase (default true),
+/// criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]).
+template <int dim> class HenckyGranular : public Material<dim> {
+public:
+    HenckyGranular(const Dictionary& dict, const std::string& name)
+        : Material<dim>(dict, name), c_(dict),
+          phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
+          muS_(frictionCoefficient(phi_)) {
+        const bool transPhase = dict.getBoolOr("transPhase", true);
+        const double rhoC =
+            dict.getScalarOr("criticalDensity", this->density(), Bounds::nonNegative());
+        rhoC_ = transPhase ? rhoC : 0.0;
+    }
+
+    /// √(M/ρ₀) [m/s], M = K + 4G/3.
+    double waveSpeed() const override { return std::sqrt(c_.M / this->density()); }
+    /// bᵉ from σ₀ by inverting Hencky elasticity (J = 1 at seeding); not projected onto the yield
+    /// surface: a σ₀ outside it returns in the first step.
+    void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const override {
+        p.be[i] = sigma0.isZero(0) ? Mat3::Identity()
+                                   : HenckyElastic<dim>::leftCauchyGreenFromStress(c_, sigma0);
+        p.stress[i] = sigma0;
+    }
+    /// Jaky's K0 = 1 − sin φ.
+    double defaultK0() const override {
+        return 1.0 - std::sin(phi_ * 3.14159265358979323846 / 180.0);
+    }
+    /// Hencky energy of the elastic part, ψ(bᵉ) V⁰ [J] [000 Eq. 5].
+    double strainEnergy(const Particles<dim>& p, Index i) const override {
+        return HenckyElastic<dim>::energyDensity(c_, p.be[i]) * p.volume0[i];
+    }
+    /// ρ_c [kg/m³], 0 with transPhase: false.
+    double criticalDensity() const override { return rhoC_; }
+
+    const ElasticConstants& elasticConstants() const { return c_; }
+    /// Friction angle φ [deg].
+    double frictionAngle() const { return phi_; }
+    /// μ_s = 2√3 sin φ/(3 − sin φ) [000 Eq. 8].
+    double staticFriction() const { return muS_; }
+
+protected:
+    ElasticConstants c_;
+    double phi_;      ///< friction angle φ [deg]
+    double muS_;      ///< μ_s [-]
+    double rhoC_ = 0; ///< ρ_c [kg/m³] in use (0: trans-phase off)
+};
+
+} // namespace mpm

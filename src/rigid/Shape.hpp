@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Dictionary.hpp"
+#include "core/Registry.hpp"
+#include "core/Types.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace mpm {
+
+/// Geometry of a rigid body in its own frame: origin at the centroid, axes along the
+/// principal axes of inertia (DESIGN §5, [004 §4.2]). The coupling asks only for the signed
+/// distance and normal, so a level-set grid (next issue) is one more Shape.
+template <int dim> class Shape {
+public:
+    virtual ~Shape() = default;
+
+    /// Signed distance φ [m] of body-frame point x (negative inside) and the outward unit
+    /// normal n = ∇φ/|∇φ| there.
+    virtual double distance(const Vec<dim>& x, Vec<dim>& normal) const = 0;
+    /// Volume [m³] (area [m²] in 2D).
+    virtual double volume() const = 0;
+    /// Principal moments of inertia per unit density about the centroid, along the body axes
+    /// [m⁵] (in 2D only component 2, the polar moment about z, [m⁴], is used).
+    virtual Vec3 unitInertia() const = 0;
+    /// Radius of a circle/sphere about the origin that encloses the shape [m] (broad phase).
+    virtual double boundingRadius() const = 0;
+    /// Surface for output, in the body frame: points (z = 0 in 2D) and cells (triangles in 3D,
+    /// line segments in 2D) as point-index lists.
+    virtual void surface(std::vector<Vec3>& points, std::vector<std::vector<int>>& cells) const = 0;
+
+    /// Build the shape named by `type:` (sphere, disk, box, …).
+    static std::unique_ptr<Shape> create(const Dictionary& dict);
+};
+
+template <int dim> using ShapeRegistry = Registry<Shape<dim>>;
+
+} // namespace mpm
