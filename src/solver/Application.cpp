@@ -18,6 +18,7 @@ namespace mpm {
 Application::Application(int argc, char* argv[], std::string name, std::string summary,
                          std::vector<Option> switches)
     : name_(std::move(name)), summary_(std::move(summary)), switches_(std::move(switches)) {
+    std::cout.setf(std::ios::unitbuf); // the log is followed live (tail -f log.mpmFoam)
     for (int i = 0; i < argc; ++i) commandLine_ += (i ? " " : "") + std::string(argv[i]);
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];

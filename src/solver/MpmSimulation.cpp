@@ -416,6 +416,7 @@ template <int dim> void MpmSimulation<dim>::restart(const std::string& timeDir) 
                                  " is not defined in constant/materials");
     }
     time_->readTimeDict(timeDir);
+    if (!bodies_.empty()) readRigidBodyState(case_.read(timeDir + "/uniform/rigidBodies"), bodies_);
     log() << "Restart from time " << timeDir << " (" << n << " particles)\n";
 }
 
@@ -492,7 +493,10 @@ template <int dim> void MpmSimulation<dim>::couple(double dt) {
 
 template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
     ScopedTimer timer(times_.bodies);
-    for (auto& b : bodies_) b->advance(dt, time_->value() - dt, gravity_);
+    for (auto& b : bodies_) {
+        b->advance(dt, time_->value() - dt, gravity_);
+        maxSpeed_ = std::max(maxSpeed_, b->velocity().norm()); // bodies count for the CFL too
+    }
     if (coupling_) {
         coupling_->enforceGap(particles_, bodies_, sort_, grid_);
         for (const auto& b : bodies_)

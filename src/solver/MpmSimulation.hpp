@@ -70,7 +70,10 @@ private:
     void snapshot();
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
     State<dim> state() const {
-        return {particles_, grid_, materials_, gravity_, reactions_, bodies_};
+        return {particles_, grid_,   materials_,
+                gravity_,   reactions_, bodies_,
+                coupling_ ? coupling_->minimumGapSeen() : 1e300,
+                coupling_ ? coupling_->numContacts() : 0};
     }
 
     const Case& case_;

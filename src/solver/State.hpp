@@ -21,6 +21,11 @@ template <int dim> struct State {
     /// Force the material exerted on each grid face in the last step [N] (per metre in 2D).
     const std::array<Vec<dim>, 2 * dim>& reactions;
     const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies;
+    /// Smallest signed distance ξ of any point to a coupled body at the end of the last step
+    /// (+inf without bodies) [m]; negative means a point is inside a body.
+    double minimumGap;
+    /// Points in contact with a body in the last step.
+    Index contacts;
 };
 
 } // namespace mpm

@@ -20,7 +20,7 @@ run() { # case threads [extra args]
         { echo "FAIL: mpmFoam failed on $dir"; cat "$dir/log.mpmFoam.$threads"; exit 1; }
 }
 
-for c in restart2D restart3D; do
+for c in restart2D restart3D restartBodies2D; do
     src=$root/tests/cases/$c
     for t in 1 2; do
         rm -rf "$work/$c.$t" && cp -r "$src" "$work/$c.$t"
@@ -69,7 +69,16 @@ for e in entries:
     assert all(o.GetCellType(i) == vtk.VTK_VERTEX for i in range(0, n, max(1, n // 50)))
     for name in ("id", "velocity", "stress", "pressure", "density", "volume", "material", "plasticStrain"):
         assert o.GetPointData().GetArray(name) is not None, "missing array " + name
-r = vtk.vtkPVDReader() if hasattr(vtk, "vtkPVDReader") else None
+bodies = os.path.join(case, "rigidBodies.pvd")
+if os.path.exists(bodies):
+    for e in ET.parse(bodies).getroot().find("Collection").findall("DataSet"):
+        r = vtk.vtkXMLPolyDataReader()
+        r.SetFileName(os.path.join(case, e.get("file")))
+        r.Update()
+        o = r.GetOutput()
+        assert o.GetNumberOfPoints() > 0 and o.GetNumberOfCells() > 0, "empty rigidBodies.vtp"
+        assert o.GetCellData().GetArray("body") is not None
+    print("%s: VTK readers load rigidBodies.pvd and every rigidBodies.vtp" % os.path.basename(case))
 print("%s: VTK readers load particles.pvd (%d steps) and every particles.vtu" % (os.path.basename(case), len(entries)))
 PY
 done

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "monitors/FunctionObject.hpp"
+
+#include <algorithm>
+
+namespace mpm {
+
+/// `type: contactGap`: the smallest signed distance ξ of any material point to any coupled
+/// rigid body at the end of each step [m] (negative: a point is inside a body), the smallest
+/// since the start of the run, and the number of points in contact. With the barrier it
+/// stays ≥ ξ_min > 0 by construction; with the linear spring it shows how far points sink in.
+/// Sampled every step.
+template <int dim> class ContactGap final : public FunctionObject<dim> {
+public:
+    ContactGap(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {}
+
+protected:
+    void initialise(const State<dim>& s, const Time&) override {
+        if (s.bodies.empty())
+            throw InputError("system/controlDict", 0, this->name(),
+                             "contactGap needs rigid bodies (constant/rigidBodies)");
+    }
+    void sample(const State<dim>& s, const Time&) override {
+        smallest_ = std::min(smallest_, s.minimumGap);
+    }
+    std::vector<std::string> columns(const State<dim>&) const override {
+        return {"minimumGap", "smallestSoFar", "contacts"};
+    }
+    std::vector<double> values(const State<dim>& s) const override {
+        return {s.minimumGap, smallest_, static_cast<double>(s.contacts)};
+    }
+
+private:
+    double smallest_ = 1e300;
+};
+
+MPM_REGISTER(FunctionObjectRegistry<2>, ContactGap<2>, "contactGap");
+MPM_REGISTER(FunctionObjectRegistry<3>, ContactGap<3>, "contactGap");
+
+} // namespace mpm
