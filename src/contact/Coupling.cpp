@@ -48,15 +48,14 @@ void Coupling<dim>::computeForces(const Particles<dim>& p, std::vector<double>& 
     localPoints_.clear();
     localForces_.clear();
     numContacts_ = 0;
-    double rpMax = 0;
-    for (double v0 : p.volume0) rpMax = std::max(rpMax, std::pow(v0, 1.0 / dim));
+    const double rpMax = maxRadius_;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
         contacts_.clear();
         forParticlesNear(body.position(), body.shape().boundingRadius() + rpMax, sort, grid,
                          [&](Index i) {
-                             const double rp = std::pow(p.volume0[i], 1.0 / dim);
+                             const double rp = radius(p.volume0[i]);
                              Vec<dim> n;
                              const double phi = body.distance(p.x[i], n);
                              if (phi >= rp) {
@@ -94,8 +93,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                                 const BlockSort<dim>& sort, const Grid<dim>& grid) const {
     Index moved = 0;
     minGap_ = 1e300;
-    double rpMax = 0;
-    for (double v0 : p.volume0) rpMax = std::max(rpMax, std::pow(v0, 1.0 / dim));
+    const double rpMax = maxRadius_;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         const RigidBody<dim>& body = *bodies[b];
@@ -106,7 +104,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                              const double phi = body.distance(p.x[i], n);
                              if (law.nonPenetrating()) {
                                  const double gap =
-                                     law.minimumGap(std::pow(p.volume0[i], 1.0 / dim));
+                                     law.minimumGap(radius(p.volume0[i]));
                                  if (phi < gap) {
                                      // Back to ξ_min along the normal; no approaching velocity.
                                      p.x[i] += (gap - phi) * n;
@@ -122,6 +120,11 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                          });
     }
     return moved;
+}
+
+template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p) {
+    maxRadius_ = 0;
+    for (double v0 : p.volume0) maxRadius_ = std::max(maxRadius_, radius(v0));
 }
 
 template <int dim> double Coupling<dim>::stableDeltaT(double lightestMass, double maxWave) const {

@@ -7,6 +7,7 @@
 #include "particles/Particles.hpp"
 #include "rigid/RigidBody.hpp"
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -28,6 +29,13 @@ public:
     explicit Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws);
 
     bool empty() const { return laws_.empty(); }
+
+    /// Record the largest coupling radius of the particles (call after seeding or restart;
+    /// V⁰ never changes, removal only lowers it).
+    void setParticles(const Particles<dim>& p);
+
+    /// Coupling radius r_p = (V_p⁰)^(1/dim) [000 §3.2] [m].
+    static double radius(double v0) { return dim == 3 ? std::cbrt(v0) : std::sqrt(v0); }
 
     /// Find contacts and their forces, and add −f and torques to the bodies (after their
     /// clearForces()). `wave[m]` and `criticalDensity[m]` are per material.
@@ -70,6 +78,7 @@ private:
     std::vector<Index> gridPoints_, localPoints_;
     std::vector<Vec<dim>> gridForces_, localForces_;
     mutable double minGap_ = 1e300;
+    double maxRadius_ = 0;
     Index numContacts_ = 0;
 };
 

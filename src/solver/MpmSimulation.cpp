@@ -168,6 +168,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         restart(from);
     }
     buildMaterialLists();
+    if (coupling_) coupling_->setParticles(particles_);
 
     // GIMP's particle half-width l_p = ½ V_p^(1/dim), in cell units, from the mean seeding volume.
     double meanSize = 0;
@@ -510,18 +511,25 @@ template <int dim> void MpmSimulation<dim>::removeOutflow() {
     // Particles more than one cell beyond an open face have left the domain: remove them,
     // keeping the order of the others (deterministic).
     const Index n = static_cast<Index>(particles_.size());
+    // Beyond these bounds on an open side a particle has left (±inf on walled sides).
+    Vec<dim> lo, hi;
+    for (int d = 0; d < dim; ++d) {
+        lo[d] = grid_.faces()[2 * d].kind == FaceCondition::Kind::Open
+                    ? grid_.lo()[d] - grid_.h() : -1e300;
+        hi[d] = grid_.faces()[2 * d + 1].kind == FaceCondition::Kind::Open
+                    ? grid_.hi()[d] + grid_.h() : 1e300;
+    }
+    auto outside = [&](Index i) {
+        return ((particles_.x[i] - lo).minCoeff() < 0) || ((hi - particles_.x[i]).minCoeff() < 0);
+    };
+    Index anyOut = 0;
+#pragma omp parallel for schedule(static) reduction(+ : anyOut)
+    for (Index i = 0; i < n; ++i) anyOut += outside(i);
+    if (anyOut == 0) return;
     std::vector<Index> keep;
     keep.reserve(n);
-    for (Index i = 0; i < n; ++i) {
-        bool out = false;
-        for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
-            if (grid_.faces()[f].kind != FaceCondition::Kind::Open) continue;
-            const int a = f / 2;
-            out |= f % 2 == 0 ? particles_.x[i][a] < grid_.lo()[a] - grid_.h()
-                              : particles_.x[i][a] > grid_.hi()[a] + grid_.h();
-        }
-        if (!out) keep.push_back(i);
-    }
+    for (Index i = 0; i < n; ++i)
+        if (!outside(i)) keep.push_back(i);
     if (static_cast<Index>(keep.size()) == n) return;
     if (keep.empty()) throw RunError("every particle has left the domain through open faces");
     particles_.permute(keep);
