@@ -169,12 +169,12 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     }
     buildMaterialLists();
     if (coupling_) coupling_->setParticles(particles_);
+    if (fresh && preload_.requested) {
+        transfer_ = Transfer<dim>::create(case_.read("system/mpmSchemes"), gimpHalfWidth());
+        gravityPreload();
+    }
 
-    // GIMP's particle half-width l_p = ½ V_p^(1/dim), in cell units, from the mean seeding volume.
-    double meanSize = 0;
-    for (double v0 : particles_.volume0) meanSize += std::pow(v0, 1.0 / dim);
-    meanSize /= static_cast<double>(particles_.size());
-    transfer_ = Transfer<dim>::create(case_.read("system/mpmSchemes"), 0.5 * meanSize * grid_.invH());
+    transfer_ = Transfer<dim>::create(case_.read("system/mpmSchemes"), gimpHalfWidth());
 
     maxSpeed_ = 0;
     for (const auto& v : particles_.v) maxSpeed_ = std::max(maxSpeed_, v.norm());
@@ -213,6 +213,57 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         write();
         for (auto& f : functions_) f->executeNow(state(), time);
     }
+}
+
+template <int dim> double MpmSimulation<dim>::gimpHalfWidth() const {
+    // GIMP's particle half-width l_p = ½ V_p^(1/dim), in cell units, from the mean seeding volume.
+    double meanSize = 0;
+    for (double v0 : particles_.volume0) meanSize += std::pow(v0, 1.0 / dim);
+    return 0.5 * meanSize / static_cast<double>(particles_.size()) * grid_.invH();
+}
+
+template <int dim> void MpmSimulation<dim>::gravityPreload() {
+    // [000 §4.2]: the stresses are initialised by loading the material with gravity, damped,
+    // until the kinetic energy is nearly zero; bodies wait. Then velocities are zeroed and the
+    // run starts at t = 0 from the preloaded state.
+    const double t0 = wallTime();
+    const double savedDamping = damping_;
+    damping_ = preload_.damping;
+    preloading_ = true;
+    maxSpeed_ = 0;
+    double peak = 0, kinetic = 0;
+    long k = 0;
+    for (; k < preload_.maxSteps; ++k) {
+        const double dt = time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+        preloadIndex_ = k;
+        sortParticles();
+        particleToGrid();
+        if (usf_) {
+            gridVelocity();
+            updateStress(dt);
+            scatterInternalForce();
+        }
+        gridUpdate(dt);
+        gridToParticle(dt);
+        if (!usf_) updateStress(dt);
+        kinetic = lastKinetic_;
+        peak = std::max(peak, kinetic);
+        if (k >= 50 && kinetic <= preload_.tolerance * peak) break;
+    }
+    if (k == preload_.maxSteps)
+        warning() << "gravity preload: kinetic energy still " << kinetic / std::max(peak, 1e-300)
+                  << " of its peak after " << k << " steps (maxSteps); continuing\n";
+    for (std::size_t i = 0; i < particles_.size(); ++i) {
+        particles_.v[i].setZero();
+        particles_.C[i].setZero();
+    }
+    maxSpeed_ = 0;
+    damping_ = savedDamping;
+    preloading_ = false;
+    times_ = PhaseTimes{};
+    log() << "Gravity preload: " << k << " steps, kinetic energy " << kinetic << " J ("
+          << kinetic / std::max(peak, 1e-300) << " of its peak), " << wallTime() - t0
+          << " s\n";
 }
 
 template <int dim> void MpmSimulation<dim>::seed() {
@@ -268,17 +319,29 @@ template <int dim> void MpmSimulation<dim>::seed() {
         double K0 = materials_[mat]->defaultK0();
         double surface = 0;
         bool surfaceGiven = false;
+        const std::vector<std::string> stressTypes{"none", "geostatic", "gravityPreload"};
+        std::string stressType = "none";
         if (set.isDict("initialStress")) {
             const Dictionary is = set.subDict("initialStress");
-            geostatic = is.getWord("type", {"none", "geostatic"}) == "geostatic";
-            if (geostatic) {
+            stressType = is.getWord("type", stressTypes);
+            if (stressType == "geostatic") {
                 K0 = is.getScalarOr("K0", K0, Bounds::nonNegative());
                 surfaceGiven = is.has("surface");
                 if (surfaceGiven) surface = is.getScalar("surface");
+            } else if (stressType == "gravityPreload") {
+                preload_.damping = is.getScalarOr("damping", 0.5, Bounds::halfOpen(0.0, 1.0));
+                preload_.tolerance = is.getScalarOr("tolerance", 1e-4, {0.0, 1.0, false, false});
+                preload_.maxSteps = is.getIntOr("maxSteps", 20000, Bounds::closed(1, 1e9));
             }
             is.checkUnknownKeys();
         } else {
-            geostatic = set.getWordOr("initialStress", "none", {"none", "geostatic"}) == "geostatic";
+            stressType = set.getWordOr("initialStress", "none", stressTypes);
+        }
+        geostatic = stressType == "geostatic";
+        if (stressType == "gravityPreload") {
+            if (gravity_.norm() == 0)
+                set.error("initialStress", "a gravity preload needs gravity (constant/g)");
+            preload_.requested = true;
         }
         set.checkUnknownKeys();
 
@@ -477,7 +540,7 @@ template <int dim> void MpmSimulation<dim>::sortParticles() {
     if (outside >= 0) fail("sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
     // steps) store the particles in block order, for locality in P2G and G2P.
-    if (time_->index() % ReorderInterval == 0) {
+    if ((preloading_ ? preloadIndex_ : time_->index()) % ReorderInterval == 0) {
         particles_.permute(sort_.order());
         sort_.update(particles_, grid_);
         buildMaterialLists();
@@ -698,6 +761,7 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     ScopedTimer timer(times_.g2p);
     const GatherStats st = transfer_->gather(particles_, grid_, dt, !usf_);
     if (coupling_) coupling_->applyLocalForces(particles_, dt);
+    lastKinetic_ = st.kineticEnergy;
     if (st.firstNonFinite >= 0) fail("G2P", st.firstNonFinite, "has a velocity that is not finite");
     maxSpeed_ = st.maxSpeed;
     if (maxSpeed_ * dt > grid_.h()) {

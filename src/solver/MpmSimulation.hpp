@@ -60,6 +60,8 @@ private:
 
     // Set-up.
     void readRigidBodies();
+    void gravityPreload();
+    double gimpHalfWidth() const;
     void seed();
     void restart(const std::string& timeDir);
     void buildMaterialLists();
@@ -92,6 +94,16 @@ private:
     bool hasOpenFace_ = false;
     Index removed_ = 0;
     double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
+    /// Gravity preload stage [000 §4.2] (`initialStress: gravityPreload` in constant/particles).
+    struct Preload {
+        bool requested = false;
+        double damping = 0.5;    ///< local damping during the preload
+        double tolerance = 1e-4; ///< stop when E_k ≤ tolerance · peak E_k
+        long maxSteps = 20000;
+    } preload_;
+    bool preloading_ = false;
+    long preloadIndex_ = 0;
+    double lastKinetic_ = 0;
     std::vector<Index> activeBlocks_;
     std::vector<char> touched_; ///< face nodes already given a reaction this step
     std::array<Vec<dim>, 2 * dim> reactions_;
@@ -104,7 +116,7 @@ private:
     double maxSpeed_ = 0;
     double maxWaveSpeed_ = 0;
     double lightestMass_ = 1e300;
-    double energyBudget_ = 0;
+    double energyBudget_ = 1e300;
     long steps_ = 0;
     double stepWall_ = 0;
     PhaseTimes times_;
