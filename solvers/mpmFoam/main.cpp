@@ -23,8 +23,8 @@ int main(int argc, char* argv[]) {
         auto sim = Simulation::create(cs, options);
         sim->start(time);
         Time::installSignalHandlers();
-        log() << "Starting time loop at t = " << time.value() << " s with "
-              << sim->numParticles() << " particles (" << sim->dimension() << "D)\n\n";
+        log() << "Starting time loop at t = " << time.value() << " s with " << sim->numParticles()
+              << " particles (" << sim->dimension() << "D)\n\n";
 
         ProgressMeter progress(time);
         while (time.run()) {
@@ -41,7 +41,8 @@ int main(int argc, char* argv[]) {
             sim->write();
             progress.print();
         }
-        if (options.dryRun) log() << "Dry run: the case is valid and one step ran; nothing written.\n";
+        if (options.dryRun)
+            log() << "Dry run: the case is valid and one step ran; nothing written.\n";
         sim->report(log());
         log() << "\nEnd\n";
     });

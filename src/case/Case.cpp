@@ -19,12 +19,14 @@ Case::Case(fs::path root) : root_(std::move(root)) {
 }
 
 bool Case::exists(const std::string& relative) const {
-    return fs::is_regular_file(root_ / relative) || fs::is_regular_file(root_ / (relative + ".yaml"));
+    return fs::is_regular_file(root_ / relative) ||
+           fs::is_regular_file(root_ / (relative + ".yaml"));
 }
 
 Dictionary Case::read(const std::string& relative) const {
     fs::path p = root_ / relative;
-    if (!fs::exists(p) && fs::exists(root_ / (relative + ".yaml"))) p = root_ / (relative + ".yaml");
+    if (!fs::exists(p) && fs::exists(root_ / (relative + ".yaml")))
+        p = root_ / (relative + ".yaml");
     if (!fs::is_regular_file(p)) throw InputError(relative, 0, "", "required file is missing");
     return Dictionary::fromFile(p, relative);
 }

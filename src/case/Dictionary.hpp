@@ -22,7 +22,9 @@ struct Bounds {
     bool hiInclusive = true;
 
     static Bounds positive() { return {0.0, std::numeric_limits<double>::infinity(), false, true}; }
-    static Bounds nonNegative() { return {0.0, std::numeric_limits<double>::infinity(), true, true}; }
+    static Bounds nonNegative() {
+        return {0.0, std::numeric_limits<double>::infinity(), true, true};
+    }
     static Bounds closed(double lo, double hi) { return {lo, hi, true, true}; }
     static Bounds halfOpen(double lo, double hi) { return {lo, hi, true, false}; }
 };

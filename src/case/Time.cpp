@@ -20,8 +20,12 @@ fs::path controlDictPath(const Case& cs) {
 
 volatile std::sig_atomic_t gWriteNow = 0;
 volatile std::sig_atomic_t gStopNow = 0;
-extern "C" void onWriteNow(int) { gWriteNow = 1; }
-extern "C" void onStopNow(int) { gStopNow = 1; }
+extern "C" void onWriteNow(int) {
+    gWriteNow = 1;
+}
+extern "C" void onStopNow(int) {
+    gStopNow = 1;
+}
 } // namespace
 
 void Time::installSignalHandlers() {
@@ -98,8 +102,7 @@ void Time::writeTimeDict(const fs::path& dir) const {
     fs::create_directories(dir / "uniform");
     std::ofstream os(dir / "uniform" / "time");
     os << std::setprecision(17) << "value: " << value_ << "\nname: \"" << name()
-       << "\"\nindex: " << index_ << "\ndeltaT: " << deltaT_ << "\ndeltaT0: " << deltaT0_
-       << "\n";
+       << "\"\nindex: " << index_ << "\ndeltaT: " << deltaT_ << "\ndeltaT0: " << deltaT0_ << "\n";
     if (!os) throw RunError("cannot write " + (dir / "uniform" / "time").string());
 }
 
@@ -111,7 +114,8 @@ long Time::writeIndexOf(double t) const {
 std::string Time::name() const {
     int p = timePrecision_;
     std::string n = timeName(value_, p);
-    while (p < 17 && n == lastName_ && value_ != lastWrittenValue_) n = timeName(value_, ++p);
+    while (p < 17 && n == lastName_ && value_ != lastWrittenValue_)
+        n = timeName(value_, ++p);
     return n;
 }
 

@@ -18,21 +18,24 @@ void Coupling<dim>::forParticlesNear(const Vec<dim>& centre, double radius,
     const double size = Grid<dim>::BlockSize * grid.h();
     IVec<dim> lo, hi;
     for (int d = 0; d < dim; ++d) {
-        lo[d] = std::max(0, static_cast<int>(std::floor((centre[d] - radius - grid.h() -
-                                                         grid.origin()[d]) / size)));
+        lo[d] = std::max(0, static_cast<int>(std::floor(
+                                (centre[d] - radius - grid.h() - grid.origin()[d]) / size)));
         hi[d] = std::min(grid.blocks()[d] - 1,
-                         static_cast<int>(std::floor((centre[d] + radius + grid.h() -
-                                                      grid.origin()[d]) / size)));
+                         static_cast<int>(std::floor(
+                             (centre[d] + radius + grid.h() - grid.origin()[d]) / size)));
         if (hi[d] < lo[d]) return;
     }
     const auto& order = sort.order();
     IVec<dim> c = lo;
     while (true) {
         Index b = 0;
-        for (int d = dim - 1; d >= 0; --d) b = b * grid.blocks()[d] + c[d];
-        for (Index j = sort.start(b); j < sort.start(b + 1); ++j) fn(order[j]);
+        for (int d = dim - 1; d >= 0; --d)
+            b = b * grid.blocks()[d] + c[d];
+        for (Index j = sort.start(b); j < sort.start(b + 1); ++j)
+            fn(order[j]);
         int d = 0;
-        while (d < dim && ++c[d] > hi[d]) c[d] = lo[d], ++d;
+        while (d < dim && ++c[d] > hi[d])
+            c[d] = lo[d], ++d;
         if (d == dim) break;
     }
 }
@@ -103,8 +106,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                              Vec<dim> n;
                              const double phi = body.distance(p.x[i], n);
                              if (law.nonPenetrating()) {
-                                 const double gap =
-                                     law.minimumGap(radius(p.volume0[i]));
+                                 const double gap = law.minimumGap(radius(p.volume0[i]));
                                  if (phi < gap) {
                                      // Back to ξ_min along the normal; no approaching velocity.
                                      p.x[i] += (gap - phi) * n;
@@ -124,7 +126,8 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
 
 template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p) {
     maxRadius_ = 0;
-    for (double v0 : p.volume0) maxRadius_ = std::max(maxRadius_, radius(v0));
+    for (double v0 : p.volume0)
+        maxRadius_ = std::max(maxRadius_, radius(v0));
 }
 
 template <int dim> double Coupling<dim>::stableDeltaT(double lightestMass, double maxWave) const {

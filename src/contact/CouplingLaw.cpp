@@ -105,7 +105,8 @@ public:
     bool nonPenetrating() const override { return false; }
     /// Δt ≤ 2π √(m_p / k_N) [000 Eq. 24].
     double stableDeltaT(double m, double c) const override {
-        const double kN = stiffness_ > 0 ? stiffness_ : 4.0 * M_PI * M_PI * m * c * c / (this->h_ * this->h_);
+        const double kN =
+            stiffness_ > 0 ? stiffness_ : 4.0 * M_PI * M_PI * m * c * c / (this->h_ * this->h_);
         return 2.0 * M_PI * std::sqrt(m / kN);
     }
 

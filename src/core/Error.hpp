@@ -14,8 +14,8 @@ namespace mpm {
 class InputError : public std::runtime_error {
 public:
     InputError(std::string file, int line, std::string key, const std::string& message)
-        : std::runtime_error(format(file, line, key, message)), file_(std::move(file)),
-          line_(line), key_(std::move(key)) {}
+        : std::runtime_error(format(file, line, key, message)), file_(std::move(file)), line_(line),
+          key_(std::move(key)) {}
 
     const std::string& file() const { return file_; }
     int line() const { return line_; }

@@ -6,9 +6,13 @@
 namespace mpm {
 
 /// The run log (standard output).
-inline std::ostream& log() { return std::cout; }
+inline std::ostream& log() {
+    return std::cout;
+}
 
 /// A warning on standard error: `--> MPMFOAM Warning: ...`.
-inline std::ostream& warning() { return std::cerr << "--> MPMFOAM Warning: "; }
+inline std::ostream& warning() {
+    return std::cerr << "--> MPMFOAM Warning: ";
+}
 
 } // namespace mpm

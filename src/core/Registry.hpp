@@ -35,7 +35,8 @@ public:
         const auto it = table().find(type);
         if (it == table().end()) {
             std::string valid;
-            for (const auto& [name, f] : table()) valid += (valid.empty() ? "" : ", ") + name;
+            for (const auto& [name, f] : table())
+                valid += (valid.empty() ? "" : ", ") + name;
             dict.error("type", "unknown type '" + type + "'; valid types are: " + valid);
         }
         return it->second(dict, args...);
@@ -49,8 +50,8 @@ public:
 
 /// Register `Derived` under `name` in `RegistryType`; Derived must be constructible from the
 /// registry's (const Dictionary&, Args...).
-#define MPM_REGISTER(RegistryType, Derived, name)                                             \
-    static const RegistryType::Add MPM_CONCAT(mpmRegistrar, __LINE__)(                        \
-        name, [](const ::mpm::Dictionary& d, auto&&... a) {                                   \
-            return std::unique_ptr<RegistryType::BaseType>(new Derived(d, a...));       \
+#define MPM_REGISTER(RegistryType, Derived, name)                                                  \
+    static const RegistryType::Add MPM_CONCAT(mpmRegistrar, __LINE__)(                             \
+        name, [](const ::mpm::Dictionary& d, auto&&... a) {                                        \
+            return std::unique_ptr<RegistryType::BaseType>(new Derived(d, a...));                  \
         })

@@ -13,9 +13,8 @@ namespace mpm {
 /// solvers lose digits); typically 3–5 sweeps. Q is orthogonal to round-off, which is what
 /// isotropic functions f(A) = Q f(λ) Qᵀ (Hencky strain, return maps) need.
 inline void symmetricEigen3(const Mat3& A, Vec3& lambda, Mat3& Q) {
-    double a[3][3] = {{A(0, 0), A(0, 1), A(0, 2)},
-                      {A(0, 1), A(1, 1), A(1, 2)},
-                      {A(0, 2), A(1, 2), A(2, 2)}};
+    double a[3][3] = {
+        {A(0, 0), A(0, 1), A(0, 2)}, {A(0, 1), A(1, 1), A(1, 2)}, {A(0, 2), A(1, 2), A(2, 2)}};
     double q[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     const double scale = std::fabs(a[0][0]) + std::fabs(a[1][1]) + std::fabs(a[2][2]) +
                          std::fabs(a[0][1]) + std::fabs(a[0][2]) + std::fabs(a[1][2]);
@@ -29,8 +28,8 @@ inline void symmetricEigen3(const Mat3& A, Vec3& lambda, Mat3& Q) {
             const double apq = a[p][r];
             if (std::fabs(apq) <= 1e-300) continue;
             const double theta = (a[r][r] - a[p][p]) / (2.0 * apq);
-            const double t = (theta >= 0 ? 1.0 : -1.0) /
-                             (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
+            const double t =
+                (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
             const double c = 1.0 / std::sqrt(t * t + 1.0);
             const double s = t * c;
             // A ← Jᵀ A J for the rotation J in the (p, r) plane.
@@ -53,7 +52,8 @@ inline void symmetricEigen3(const Mat3& A, Vec3& lambda, Mat3& Q) {
     }
     lambda = Vec3(a[0][0], a[1][1], a[2][2]);
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Q(i, j) = q[i][j];
+        for (int j = 0; j < 3; ++j)
+            Q(i, j) = q[i][j];
 }
 
 namespace detail {
@@ -102,7 +102,8 @@ template <int Lanes> void symmetricEigen3Batch(const Mat3* A, Vec3* lambda, Mat3
         const Mat3& m = A[l];
         a[0][l] = m(0, 0), a[1][l] = m(1, 1), a[2][l] = m(2, 2);
         a[3][l] = m(0, 1), a[4][l] = m(0, 2), a[5][l] = m(1, 2);
-        for (int k = 0; k < 9; ++k) q[k][l] = (k % 4 == 0) ? 1.0 : 0.0;
+        for (int k = 0; k < 9; ++k)
+            q[k][l] = (k % 4 == 0) ? 1.0 : 0.0;
         tol[l] = 1e-30 + 1e-16 * (std::fabs(a[0][l]) + std::fabs(a[1][l]) + std::fabs(a[2][l]) +
                                   std::fabs(a[3][l]) + std::fabs(a[4][l]) + std::fabs(a[5][l]));
     }
@@ -118,11 +119,14 @@ template <int Lanes> void symmetricEigen3Batch(const Mat3* A, Vec3* lambda, Mat3
     for (int l = 0; l < Lanes; ++l) {
         lambda[l] = Vec3(a[0][l], a[1][l], a[2][l]);
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) Q[l](i, j) = q[3 * i + j][l];
+            for (int j = 0; j < 3; ++j)
+                Q[l](i, j) = q[3 * i + j][l];
     }
 }
 
 /// Q diag(d) Qᵀ.
-inline Mat3 fromEigen(const Mat3& Q, const Vec3& d) { return Q * d.asDiagonal() * Q.transpose(); }
+inline Mat3 fromEigen(const Mat3& Q, const Vec3& d) {
+    return Q * d.asDiagonal() * Q.transpose();
+}
 
 } // namespace mpm

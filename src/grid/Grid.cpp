@@ -50,11 +50,10 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
         if (!(extent > 0)) b.error("max", "max must exceed min in every direction");
         const double cells = extent / h_;
         const double rounded = std::round(cells);
-        if (rounded < 1 || std::fabs(cells - rounded) > 1e-6 * std::max(1.0, cells))
-        {
+        if (rounded < 1 || std::fabs(cells - rounded) > 1e-6 * std::max(1.0, cells)) {
             std::ostringstream os;
-            os << "the box extent " << extent << " m along " << "xyz"[d]
-               << " is not a whole number of cells of size " << h_ << " m";
+            os << "the box extent " << extent << " m along "
+               << "xyz"[d] << " is not a whole number of cells of size " << h_ << " m";
             dict.error("cellSize", os.str());
         }
         if (rounded > 1e5) dict.error("cellSize", "more than 100000 cells in one direction");
@@ -73,9 +72,11 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
     if (numNodes_ > Index(400) * 1000 * 1000)
         dict.error("cellSize", "the grid would have more than 4e8 nodes");
 
-    const Dictionary boundary = dict.has("boundary") ? dict.subDict("boundary")
-                                                     : Dictionary::fromString("{}", dict.fileName());
-    for (int f = 0; f < NumFaces; ++f) faces_[f] = readFace(boundary, faceName(f));
+    const Dictionary boundary = dict.has("boundary")
+                                    ? dict.subDict("boundary")
+                                    : Dictionary::fromString("{}", dict.fileName());
+    for (int f = 0; f < NumFaces; ++f)
+        faces_[f] = readFace(boundary, faceName(f));
     boundary.checkUnknownKeys();
 
     // Nodes on or beyond each face: layers 0..Pad on the low side, n-1-Pad..n-1 on the high side.

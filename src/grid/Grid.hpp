@@ -42,7 +42,8 @@ public:
 
     Index nodeIndex(const IVec<dim>& i) const {
         Index k = i[dim - 1];
-        for (int d = dim - 2; d >= 0; --d) k = k * n_[d] + i[d];
+        for (int d = dim - 2; d >= 0; --d)
+            k = k * n_[d] + i[d];
         return k;
     }
     Index stride(int d) const { return stride_[d]; }

@@ -135,11 +135,9 @@ void convertValues(const Source* source, std::size_t count, std::vector<Target>&
 
 /// Copy every value of `array` into `target`, converting from the array's native type.
 /// Returns false for a data type that is not a plain number.
-template <class Target>
-bool copyValues(vtkDataArray* array, std::vector<Target>& target) {
-    const auto count =
-        static_cast<std::size_t>(array->GetNumberOfTuples()) *
-        static_cast<std::size_t>(array->GetNumberOfComponents());
+template <class Target> bool copyValues(vtkDataArray* array, std::vector<Target>& target) {
+    const auto count = static_cast<std::size_t>(array->GetNumberOfTuples()) *
+                       static_cast<std::size_t>(array->GetNumberOfComponents());
     if (count == 0) {
         target.clear();
         return true;
@@ -153,7 +151,9 @@ bool copyValues(vtkDataArray* array, std::vector<Target>& target) {
     return true;
 }
 
-bool isFloatingType(int dataType) { return dataType == VTK_DOUBLE || dataType == VTK_FLOAT; }
+bool isFloatingType(int dataType) {
+    return dataType == VTK_DOUBLE || dataType == VTK_FLOAT;
+}
 
 void checkCloud(const std::filesystem::path& file, const PointCloud& cloud) {
     if (cloud.points.size() % 3 != 0) {

@@ -18,8 +18,8 @@ namespace {
 /// `%.17g`, independent of the global locale.
 std::string formatTime(double time) {
     char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), time,
-                                      std::chars_format::general, 17);
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof(buffer), time, std::chars_format::general, 17);
     return std::string(buffer, result.ptr);
 }
 
@@ -28,12 +28,24 @@ std::string escapeXml(const std::string& text) {
     out.reserve(text.size());
     for (const char c : text) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        default: out += c; break;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\'':
+            out += "&apos;";
+            break;
+        default:
+            out += c;
+            break;
         }
     }
     return out;
@@ -68,9 +80,8 @@ std::string unescapeXml(const std::string& text) {
 bool attribute(const std::string& tag, const std::string& name, std::string& value) {
     std::size_t pos = 0;
     while ((pos = tag.find(name, pos)) != std::string::npos) {
-        const bool startsWord =
-            pos > 0 && (tag[pos - 1] == ' ' || tag[pos - 1] == '\t' || tag[pos - 1] == '\n' ||
-                        tag[pos - 1] == '\r');
+        const bool startsWord = pos > 0 && (tag[pos - 1] == ' ' || tag[pos - 1] == '\t' ||
+                                            tag[pos - 1] == '\n' || tag[pos - 1] == '\r');
         std::size_t p = pos + name.size();
         pos = p;
         if (!startsWord) {
@@ -201,8 +212,8 @@ void PvdIndex::write() const {
                        "byte_order=\"LittleEndian\">\n"
                        "  <Collection>\n";
     for (const Entry& e : entries_) {
-        text += "    <DataSet timestep=\"" + formatTime(e.time) + "\" group=\"\" part=\"0\" file=\"" +
-                escapeXml(e.file) + "\"/>\n";
+        text += "    <DataSet timestep=\"" + formatTime(e.time) +
+                "\" group=\"\" part=\"0\" file=\"" + escapeXml(e.file) + "\"/>\n";
     }
     text += "  </Collection>\n"
             "</VTKFile>\n";

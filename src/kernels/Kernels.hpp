@@ -96,10 +96,10 @@ struct CubicBSplineKernel {
         const double fb = std::floor(xh) - 1.0;
         const double fx = xh - fb; // ∈ [1, 2)
         // d_k = fx - k: d0 ∈ [1,2), d1 ∈ [0,1), d2 ∈ (-1,0], d3 ∈ (-2,-1]
-        const double r0 = 2.0 - fx;       // 2 - |d0|
-        const double d1 = fx - 1.0;       // |d1|
-        const double d2 = 2.0 - fx;       // |d2|
-        const double r3 = fx - 1.0;       // 2 - |d3|
+        const double r0 = 2.0 - fx; // 2 - |d0|
+        const double d1 = fx - 1.0; // |d1|
+        const double d2 = 2.0 - fx; // |d2|
+        const double r3 = fx - 1.0; // 2 - |d3|
         w[0] = r0 * r0 * r0 / 6.0;
         w[1] = 0.5 * d1 * d1 * d1 - d1 * d1 + 2.0 / 3.0;
         w[2] = 0.5 * d2 * d2 * d2 - d2 * d2 + 2.0 / 3.0;

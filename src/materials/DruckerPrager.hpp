@@ -16,8 +16,7 @@ template <int dim> class DruckerPrager : public HenckyGranular<dim> {
 public:
     DruckerPrager(const Dictionary& dict, const std::string& name);
 
-    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids,
-                       double dt) const override;
+    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const override;
 
     /// Dilation angle ψ [deg].
     double dilationAngle() const { return psi_; }

@@ -80,7 +80,8 @@ Index HenckyElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Inde
         double eps[3][Lanes];
 #pragma omp simd
         for (int l = 0; l < Lanes; ++l)
-            for (int a = 0; a < 3; ++a) eps[a][l] = 0.5 * fastLog(lam[l][a]);
+            for (int a = 0; a < 3; ++a)
+                eps[a][l] = 0.5 * fastLog(lam[l][a]);
         for (int l = 0; l < Lanes; ++l) {
             if (b * Lanes + l >= n) break;
             const Index i = idx[l];
@@ -95,8 +96,7 @@ Index HenckyElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Inde
     return bad < n ? ids[bad] : -1;
 }
 
-template <int dim>
-double HenckyElastic<dim>::strainEnergy(const Particles<dim>& p, Index i) const {
+template <int dim> double HenckyElastic<dim>::strainEnergy(const Particles<dim>& p, Index i) const {
     return energyDensity(c_, p.be[i]) * p.volume0[i];
 }
 

@@ -15,8 +15,7 @@ public:
 
     double waveSpeed() const override;
     void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const override;
-    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids,
-                       double dt) const override;
+    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const override;
     double defaultK0() const override { return c_.nu / (1.0 - c_.nu); }
     double strainEnergy(const Particles<dim>& p, Index i) const override;
 

@@ -102,10 +102,10 @@ struct DruckerPragerFlow {
 /// rate (Δγ = √2 |Δε̂ᵖ|, conjugate to q = √½ |s|; simple shear: the shear rate).
 struct MuIFlow {
     static constexpr double beta = 0.0; ///< isochoric flow
-    double muS;       ///< static friction coefficient μ_s [-]
-    double dMu;       ///< μ₂ − μ_s [-]
-    double I0;        ///< I₀ [-]
-    double G;         ///< shear modulus [Pa]
+    double muS;                         ///< static friction coefficient μ_s [-]
+    double dMu;                         ///< μ₂ − μ_s [-]
+    double I0;                          ///< I₀ [-]
+    double G;                           ///< shear modulus [Pa]
     double rateScale; ///< d √ρ_s / Δt [kg^½ m^-½ s⁻¹]: I = rateScale Δγ / √p
 
     /// μ(I) [000 Eq. 9] (μ_s at I = 0).

@@ -32,8 +32,8 @@ Index LinearElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Inde
         const Mat3 W = 0.5 * (L - L.transpose());
         const Mat3& s = p.stress[i];
         const double trD = D.trace();
-        const Mat3 rate = (c_.K - 2.0 * c_.G / 3.0) * trD * Mat3::Identity() + 2.0 * c_.G * D +
-                          W * s - s * W;
+        const Mat3 rate =
+            (c_.K - 2.0 * c_.G / 3.0) * trD * Mat3::Identity() + 2.0 * c_.G * D + W * s - s * W;
         p.stress[i] = s + dt * rate;
 
         if (!std::isfinite(p.stress[i].sum())) bad = std::min(bad, k);
@@ -41,8 +41,7 @@ Index LinearElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Inde
     return bad < n ? ids[bad] : -1;
 }
 
-template <int dim>
-double LinearElastic<dim>::strainEnergy(const Particles<dim>& p, Index i) const {
+template <int dim> double LinearElastic<dim>::strainEnergy(const Particles<dim>& p, Index i) const {
     const Mat3& s = p.stress[i];
     const double pr = s.trace() / 3.0;
     const Mat3 dev = s - pr * Mat3::Identity();

@@ -8,8 +8,7 @@ namespace mpm {
 template <int dim>
 MuI<dim>::MuI(const Dictionary& dict, const std::string& name)
     : HenckyGranular<dim>(dict, name),
-      mu2_(frictionCoefficient(
-          dict.getScalar("frictionAngle2", {this->phi_, 90.0, false, false}))),
+      mu2_(frictionCoefficient(dict.getScalar("frictionAngle2", {this->phi_, 90.0, false, false}))),
       I0_(dict.getScalarOr("I0", 0.278, Bounds::positive())),
       grainDiameter_(dict.getScalar("grainDiameter", Bounds::positive())),
       grainDensity_(dict.getScalar("grainDensity", Bounds::positive())) {}

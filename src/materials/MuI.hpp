@@ -17,8 +17,7 @@ template <int dim> class MuI : public HenckyGranular<dim> {
 public:
     MuI(const Dictionary& dict, const std::string& name);
 
-    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids,
-                       double dt) const override;
+    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const override;
 
     /// The flow functor for a step dt > 0 (μ(I), plastic multiplier).
     MuIFlow flow(double dt) const;

@@ -10,7 +10,8 @@ template <int dim> class BoundaryReaction final : public FunctionObject<dim> {
 public:
     BoundaryReaction(const Dictionary& dict, const std::string& name)
         : FunctionObject<dim>(dict, name) {
-        for (int f = 0; f < 2 * dim; ++f) faceNames_.push_back(Grid<dim>::faceName(f));
+        for (int f = 0; f < 2 * dim; ++f)
+            faceNames_.push_back(Grid<dim>::faceName(f));
     }
 
 protected:
@@ -18,13 +19,15 @@ protected:
         std::vector<std::string> c;
         static const char* axes = "xyz";
         for (const auto& f : faceNames_)
-            for (int d = 0; d < dim; ++d) c.push_back(f + "_F" + axes[d]);
+            for (int d = 0; d < dim; ++d)
+                c.push_back(f + "_F" + axes[d]);
         return c;
     }
     std::vector<double> values(const State<dim>& s) const override {
         std::vector<double> v;
         for (int f = 0; f < 2 * dim; ++f)
-            for (int d = 0; d < dim; ++d) v.push_back(s.reactions[f][d]);
+            for (int d = 0; d < dim; ++d)
+                v.push_back(s.reactions[f][d]);
         return v;
     }
 

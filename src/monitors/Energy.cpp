@@ -23,8 +23,9 @@ protected:
         const double strain = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
             return s.materials[p.material[i]]->strainEnergy(p, i);
         });
-        const double gravitational = deterministicSum(
-            static_cast<Index>(p.size()), [&](Index i) { return -p.mass[i] * s.gravity.dot(p.x[i]); });
+        const double gravitational = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
+            return -p.mass[i] * s.gravity.dot(p.x[i]);
+        });
         double bodyKinetic = 0, bodyGravitational = 0;
         for (const auto& b : s.bodies) {
             bodyKinetic += b->kineticEnergy();

@@ -31,12 +31,14 @@ void FunctionObject<dim>::open(const Case& cs, const Time& time, const State<dim
 template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, const Time& time) {
     if (!headerDone_) {
         out_ << "# " << name_ << "\n# time";
-        for (const auto& c : columns(s)) out_ << ' ' << c;
+        for (const auto& c : columns(s))
+            out_ << ' ' << c;
         out_ << '\n';
         headerDone_ = true;
     }
     out_ << std::setprecision(precision_) << std::scientific << time.value();
-    for (double v : values(s)) out_ << ' ' << v;
+    for (double v : values(s))
+        out_ << ' ' << v;
     out_ << '\n';
     out_.flush();
 }

@@ -37,8 +37,8 @@ protected:
             surface_ = -1e300;
             const auto& p = s.particles;
             for (std::size_t i = 0; i < p.size(); ++i)
-                surface_ = std::max(surface_, up_.dot(p.x[i]) +
-                                                  0.5 * std::pow(p.volume0[i], 1.0 / dim));
+                surface_ =
+                    std::max(surface_, up_.dot(p.x[i]) + 0.5 * std::pow(p.volume0[i], 1.0 / dim));
         }
     }
     std::vector<std::string> columns(const State<dim>&) const override {

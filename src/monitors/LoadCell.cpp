@@ -15,7 +15,8 @@ template <int dim> class LoadCell final : public FunctionObject<dim> {
 public:
     LoadCell(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {
         std::vector<std::string> faces;
-        for (int f = 0; f < 2 * dim; ++f) faces.push_back(Grid<dim>::faceName(f));
+        for (int f = 0; f < 2 * dim; ++f)
+            faces.push_back(Grid<dim>::faceName(f));
         const std::string face = dict.getWord("face", faces);
         for (int f = 0; f < 2 * dim; ++f)
             if (faces[f] == face) face_ = f;
@@ -41,12 +42,14 @@ protected:
     std::vector<std::string> columns(const State<dim>&) const override {
         std::vector<std::string> c{"load", "loadAverage"};
         const char* axes = "xyz";
-        for (int d = 0; d < dim; ++d) c.push_back(std::string("F") + axes[d]);
+        for (int d = 0; d < dim; ++d)
+            c.push_back(std::string("F") + axes[d]);
         return c;
     }
     std::vector<double> values(const State<dim>&) const override {
         std::vector<double> v{load_, weight_ > 0 ? sum_ / weight_ : load_};
-        for (int d = 0; d < dim; ++d) v.push_back(raw_[d]);
+        for (int d = 0; d < dim; ++d)
+            v.push_back(raw_[d]);
         return v;
     }
 

@@ -14,9 +14,11 @@ public:
 protected:
     void initialise(const State<dim>& s, const Time&) override {
         bool found = only_.empty();
-        for (const auto& b : s.bodies) found |= b->name() == only_;
-        if (!found) throw InputError("system/controlDict", 0, this->name() + ".body",
-                                     "no rigid body named '" + only_ + "' in constant/rigidBodies");
+        for (const auto& b : s.bodies)
+            found |= b->name() == only_;
+        if (!found)
+            throw InputError("system/controlDict", 0, this->name() + ".body",
+                             "no rigid body named '" + only_ + "' in constant/rigidBodies");
         if (s.bodies.empty())
             throw InputError("system/controlDict", 0, this->name(),
                              "rigidBodyState needs rigid bodies (constant/rigidBodies)");
@@ -27,11 +29,16 @@ protected:
         for (const auto& b : s.bodies) {
             if (!only_.empty() && b->name() != only_) continue;
             const std::string n = b->name() + "_";
-            for (int d = 0; d < dim; ++d) c.push_back(n + axes[d]);
-            for (int d = 0; d < dim; ++d) c.push_back(n + "v" + axes[d]);
-            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d) c.push_back(n + "omega" + axes[d]);
-            for (int d = 0; d < dim; ++d) c.push_back(n + "F" + axes[d]);
-            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d) c.push_back(n + "T" + axes[d]);
+            for (int d = 0; d < dim; ++d)
+                c.push_back(n + axes[d]);
+            for (int d = 0; d < dim; ++d)
+                c.push_back(n + "v" + axes[d]);
+            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+                c.push_back(n + "omega" + axes[d]);
+            for (int d = 0; d < dim; ++d)
+                c.push_back(n + "F" + axes[d]);
+            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+                c.push_back(n + "T" + axes[d]);
         }
         return c;
     }
@@ -40,11 +47,16 @@ protected:
         for (const auto& b : s.bodies) {
             if (!only_.empty() && b->name() != only_) continue;
             const Vec3 w = b->angularVelocity();
-            for (int d = 0; d < dim; ++d) v.push_back(b->position()[d]);
-            for (int d = 0; d < dim; ++d) v.push_back(b->velocity()[d]);
-            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d) v.push_back(w[d]);
-            for (int d = 0; d < dim; ++d) v.push_back(b->force()[d]);
-            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d) v.push_back(b->torque()[d]);
+            for (int d = 0; d < dim; ++d)
+                v.push_back(b->position()[d]);
+            for (int d = 0; d < dim; ++d)
+                v.push_back(b->velocity()[d]);
+            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+                v.push_back(w[d]);
+            for (int d = 0; d < dim; ++d)
+                v.push_back(b->force()[d]);
+            for (int d = (dim == 2 ? 2 : 0); d < 3; ++d)
+                v.push_back(b->torque()[d]);
         }
         return v;
     }

@@ -25,22 +25,27 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
     if (firstOutside < n) return firstOutside;
 
     start_.assign(nb + 1, 0);
-    for (Index i = 0; i < n; ++i) ++start_[block_[i] + 1];
-    for (Index b = 0; b < nb; ++b) start_[b + 1] += start_[b];
+    for (Index i = 0; i < n; ++i)
+        ++start_[block_[i] + 1];
+    for (Index b = 0; b < nb; ++b)
+        start_[b + 1] += start_[b];
     order_.resize(n);
     {
         std::vector<Index> next(start_.begin(), start_.end() - 1);
-        for (Index i = 0; i < n; ++i) order_[next[block_[i]]++] = i;
+        for (Index i = 0; i < n; ++i)
+            order_[next[block_[i]]++] = i;
     }
 
-    for (auto& c : colourBlocks_) c.clear();
+    for (auto& c : colourBlocks_)
+        c.clear();
     active_.assign(nb, 0);
     const IVec<dim> nbDims = grid.blocks();
     for (Index b = 0; b < nb; ++b) {
         if (start_[b + 1] == start_[b]) continue;
         const IVec<dim> c = grid.blockCoord(b);
         int colour = 0;
-        for (int d = 0; d < dim; ++d) colour |= (c[d] & 1) << d;
+        for (int d = 0; d < dim; ++d)
+            colour |= (c[d] & 1) << d;
         colourBlocks_[colour].push_back(b);
         // Mark the 3^dim neighbourhood.
         IVec<dim> o = IVec<dim>::Constant(-1);
@@ -54,7 +59,8 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
             }
             if (inside) active_[k] = 1;
             int d = 0;
-            while (d < dim && ++o[d] > 1) o[d++] = -1;
+            while (d < dim && ++o[d] > 1)
+                o[d++] = -1;
             if (d == dim) break;
         }
     }

@@ -12,20 +12,20 @@ namespace mpm {
 /// Stress and the elastic left Cauchy–Green tensor are 3×3 in 2D too: 2D scenes are plane
 /// strain, so σ_zz is carried and the return maps work in 3D principal space.
 template <int dim> struct Particles {
-    std::vector<Vec<dim>> x;        ///< position [m]
-    std::vector<Vec<dim>> v;        ///< velocity [m/s]
-    std::vector<Mat<dim>> C;        ///< APIC affine velocity B_p D_p⁻¹ [1/s] [000 Eq. 13, 17]
-    std::vector<Mat<dim>> L;        ///< velocity gradient of the last step [1/s] [002 Eq. 75]
-    std::vector<Mat<dim>> F;        ///< deformation gradient since seeding [-]
-    std::vector<Mat3> be;           ///< elastic left Cauchy–Green tensor bᵉ [-] [000 Eq. 4]
-    std::vector<Mat3> stress;       ///< Cauchy stress σ [Pa], tension positive
-    std::vector<double> mass;       ///< m_p [kg] (per metre of depth in 2D)
-    std::vector<double> volume0;    ///< V_p at seeding [m³]
-    std::vector<double> volume;     ///< V_p = J V_p⁰ [m³]
+    std::vector<Vec<dim>> x;           ///< position [m]
+    std::vector<Vec<dim>> v;           ///< velocity [m/s]
+    std::vector<Mat<dim>> C;           ///< APIC affine velocity B_p D_p⁻¹ [1/s] [000 Eq. 13, 17]
+    std::vector<Mat<dim>> L;           ///< velocity gradient of the last step [1/s] [002 Eq. 75]
+    std::vector<Mat<dim>> F;           ///< deformation gradient since seeding [-]
+    std::vector<Mat3> be;              ///< elastic left Cauchy–Green tensor bᵉ [-] [000 Eq. 4]
+    std::vector<Mat3> stress;          ///< Cauchy stress σ [Pa], tension positive
+    std::vector<double> mass;          ///< m_p [kg] (per metre of depth in 2D)
+    std::vector<double> volume0;       ///< V_p at seeding [m³]
+    std::vector<double> volume;        ///< V_p = J V_p⁰ [m³]
     std::vector<double> plasticStrain; ///< accumulated plastic shear strain [-]
     std::vector<double> slip;          ///< accumulated contact slip u_T [004 Eq. 37] [m]
-    std::vector<Index> id;          ///< stable identity, kept across sorting and restart
-    std::vector<int> material;      ///< index into the material list
+    std::vector<Index> id;             ///< stable identity, kept across sorting and restart
+    std::vector<int> material;         ///< index into the material list
 
     std::size_t size() const { return x.size(); }
 
@@ -45,7 +45,8 @@ template <int dim> struct Particles {
         forEachArray([&order](auto& a) {
             std::remove_reference_t<decltype(a)> b(order.size());
 #pragma omp parallel for schedule(static)
-            for (Index k = 0; k < static_cast<Index>(order.size()); ++k) b[k] = a[order[k]];
+            for (Index k = 0; k < static_cast<Index>(order.size()); ++k)
+                b[k] = a[order[k]];
             a.swap(b);
         });
     }

@@ -111,7 +111,8 @@ public:
     Eigen::AlignedBox<double, dim> bounds() const override {
         const Vec<dim> n = (p2_ - p1_).normalized();
         Vec<dim> e;
-        for (int d = 0; d < dim; ++d) e[d] = radius_ * std::sqrt(std::max(0.0, 1.0 - n[d] * n[d]));
+        for (int d = 0; d < dim; ++d)
+            e[d] = radius_ * std::sqrt(std::max(0.0, 1.0 - n[d] * n[d]));
         return {p1_.cwiseMin(p2_) - e, p1_.cwiseMax(p2_) + e};
     }
     double volume() const override { return pi * radius_ * radius_ * (p2_ - p1_).norm(); }
@@ -133,10 +134,12 @@ public:
         }
         const std::vector<std::vector<double>> list = dict.vectorList("vertices", 2);
         if (list.size() < 3) dict.error("vertices", "a polygon needs at least 3 vertices");
-        for (const auto& v : list) vertices_.emplace_back(v[0], v[1]);
+        for (const auto& v : list)
+            vertices_.emplace_back(v[0], v[1]);
 
         Eigen::AlignedBox2d box;
-        for (const auto& v : vertices_) box.extend(v);
+        for (const auto& v : vertices_)
+            box.extend(v);
         double twiceArea = 0.0;
         for (std::size_t i = 0, j = vertices_.size() - 1; i < vertices_.size(); j = i++) {
             twiceArea += vertices_[j].x() * vertices_[i].y() - vertices_[i].x() * vertices_[j].y();

@@ -110,7 +110,8 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
 
     const auto linear = [&n](const IVec<dim>& c) {
         std::size_t i = 0;
-        for (int d = dim - 1; d >= 0; --d) i = i * static_cast<std::size_t>(n[d]) + c[d];
+        for (int d = dim - 1; d >= 0; --d)
+            i = i * static_cast<std::size_t>(n[d]) + c[d];
         return i;
     };
 
@@ -154,7 +155,8 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
     const auto annulusSample = [&]() {
         while (true) {
             Vec<dim> d;
-            for (int k = 0; k < dim; ++k) d[k] = (4.0 * uniform01(rng) - 2.0) * r;
+            for (int k = 0; k < dim; ++k)
+                d[k] = (4.0 * uniform01(rng) - 2.0) * r;
             const double q = d.squaredNorm();
             if (q >= r2 && q <= 4.0 * r2) return d;
         }
@@ -177,7 +179,8 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
     if (tryInsert(box.center())) grow();
     for (int misses = 0; misses < maxSeedMisses;) {
         Vec<dim> x;
-        for (int d = 0; d < dim; ++d) x[d] = box.min()[d] + uniform01(rng) * box.sizes()[d];
+        for (int d = 0; d < dim; ++d)
+            x[d] = box.min()[d] + uniform01(rng) * box.sizes()[d];
         if (tryInsert(x)) {
             grow();
             misses = 0;

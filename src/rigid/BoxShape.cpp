@@ -46,7 +46,9 @@ template <int dim> double BoxShape<dim>::distance(const Vec<dim>& x, Vec<dim>& n
     return q[k];
 }
 
-template <int dim> double BoxShape<dim>::volume() const { return (2.0 * h_).prod(); }
+template <int dim> double BoxShape<dim>::volume() const {
+    return (2.0 * h_).prod();
+}
 
 template <int dim> Vec3 BoxShape<dim>::unitInertia() const {
     const double v = volume();

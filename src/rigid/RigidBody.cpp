@@ -16,14 +16,15 @@ constexpr double pi = 3.14159265358979323846;
 /// `%.17g`, independent of the global locale: read back bit-identically by Dictionary.
 std::string fmt(double value) {
     char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value,
-                                      std::chars_format::general, 17);
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, 17);
     return std::string(buffer, result.ptr);
 }
 
 template <class V> std::string fmtList(const V& v) {
     std::string s = "[";
-    for (Eigen::Index i = 0; i < v.size(); ++i) s += (i > 0 ? ", " : "") + fmt(v[i]);
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+        s += (i > 0 ? ", " : "") + fmt(v[i]);
     return s + "]";
 }
 
@@ -32,10 +33,14 @@ template <int dim> Vec<dim> readVec(const Dictionary& dict, const std::string& k
     return Eigen::Map<const Vec<dim>>(v.data());
 }
 
-Vec3 readVec3(const Dictionary& dict, const std::string& key) { return readVec<3>(dict, key); }
+Vec3 readVec3(const Dictionary& dict, const std::string& key) {
+    return readVec<3>(dict, key);
+}
 
 /// Number of angular-velocity components: 3 in 3D, 1 (about z) in 2D.
-template <int dim> constexpr int nOmega() { return dim == 3 ? 3 : 1; }
+template <int dim> constexpr int nOmega() {
+    return dim == 3 ? 3 : 1;
+}
 
 /// Velocity and world angular velocity of a prescribed motion at time t: linear interpolation
 /// in the rows (t, v…, ω…) sorted by time, held constant beyond the first and last rows.
@@ -51,15 +56,18 @@ void interpolate(const std::vector<std::vector<double>>& table, double t, Vec<di
         i0 = i1 = table.size() - 1;
     } else {
         i1 = 1;
-        while (table[i1][0] < t) ++i1; // rows are strictly increasing in time
+        while (table[i1][0] < t)
+            ++i1; // rows are strictly increasing in time
         i0 = i1 - 1;
         w = (t - table[i0][0]) / (table[i1][0] - table[i0][0]);
     }
     const auto at = [&](std::size_t c) { return (1.0 - w) * table[i0][c] + w * table[i1][c]; };
-    for (int d = 0; d < dim; ++d) v[d] = at(1 + d);
+    for (int d = 0; d < dim; ++d)
+        v[d] = at(1 + d);
     omega.setZero();
     if constexpr (dim == 3) {
-        for (int d = 0; d < 3; ++d) omega[d] = at(1 + dim + d);
+        for (int d = 0; d < 3; ++d)
+            omega[d] = at(1 + dim + d);
     } else {
         omega[2] = at(1 + dim);
     }
@@ -90,9 +98,8 @@ RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std:
                 for (std::size_t i = 1; i < table_.size(); ++i) {
                     if (!(table_[i][0] > table_[i - 1][0])) {
                         m.error("table", "rows must be sorted by strictly increasing time; row " +
-                                             std::to_string(i) + " (t = " +
-                                             fmt(table_[i][0]) + ") is not after row " +
-                                             std::to_string(i - 1));
+                                             std::to_string(i) + " (t = " + fmt(table_[i][0]) +
+                                             ") is not after row " + std::to_string(i - 1));
                     }
                 }
             } else {
@@ -286,11 +293,11 @@ template <int dim> void RigidBody<dim>::advance(double dt, double t, const Vec<d
                         (moment[1] + w[2] * w[0] * (inertia[2] - inertia[0])) / inertia[1],
                         (moment[2] + w[0] * w[1] * (inertia[0] - inertia[1])) / inertia[2]);
         };
-        const Vec3 omegaEstimate = omegaBody_ + 0.5 * dt * alphaPrev_;     // Eq. 21
-        const Vec3 alphaPredict = alpha(omegaEstimate);                     // Eq. 22–24
-        const Vec3 omegaPredict = omegaBody_ + 0.5 * dt * alphaPredict;     // Eq. 25
-        const Vec3 alphaCorrect = alpha(omegaPredict);                      // Eq. 26–28
-        omegaBody_ += dt * alphaCorrect;                                    // Eq. 29
+        const Vec3 omegaEstimate = omegaBody_ + 0.5 * dt * alphaPrev_;  // Eq. 21
+        const Vec3 alphaPredict = alpha(omegaEstimate);                 // Eq. 22–24
+        const Vec3 omegaPredict = omegaBody_ + 0.5 * dt * alphaPredict; // Eq. 25
+        const Vec3 alphaCorrect = alpha(omegaPredict);                  // Eq. 26–28
+        omegaBody_ += dt * alphaCorrect;                                // Eq. 29
         alphaPrev_ = alphaCorrect;
 
         // Quaternion update q^{n+1} = B⁻¹ Bᵀ q^n with β = Δt ω^{n+½}/4 [004 Eq. 30–31]. In

@@ -98,7 +98,7 @@ private:
     Vec<dim> v_ = Vec<dim>::Zero();
     Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity(); ///< 3D orientation
     double theta_ = 0;                                      ///< 2D orientation [rad]
-    Vec3 omegaBody_ = Vec3::Zero(); ///< ω^{n-½} in principal (body) axes
+    Vec3 omegaBody_ = Vec3::Zero();                         ///< ω^{n-½} in principal (body) axes
     Vec3 alphaPrev_ = Vec3::Zero(); ///< α^{n-1} in body axes (Walton–Braun)
     Mat<dim> R_ = Mat<dim>::Identity();
 

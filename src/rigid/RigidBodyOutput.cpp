@@ -49,7 +49,8 @@ void writeRigidBodies(const std::filesystem::path& vtpFile,
             velocity.values.insert(velocity.values.end(), v3.data(), v3.data() + 3);
         }
         for (std::vector<int> cell : localCells) {
-            for (int& i : cell) i += first;
+            for (int& i : cell)
+                i += first;
             cells.push_back(std::move(cell));
             body.values.push_back(static_cast<double>(b));
         }
@@ -66,7 +67,8 @@ void writeRigidBodyState(const std::filesystem::path& file,
         b->writeState(state);
         text << quoted(b->name()) << ":\n";
         std::istringstream lines(state.str());
-        for (std::string line; std::getline(lines, line);) text << "    " << line << "\n";
+        for (std::string line; std::getline(lines, line);)
+            text << "    " << line << "\n";
     }
     if (bodies.empty()) text << "{}\n";
     if (file.has_parent_path()) {

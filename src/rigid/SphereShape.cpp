@@ -76,7 +76,8 @@ void SphereShape<dim>::surface(std::vector<Vec3>& points,
         const int south = static_cast<int>(points.size()) - 1;
         const auto ring = [](int j, int i) { return 1 + (j - 1) * nLongitude + i % nLongitude; };
         // Counter-clockwise seen from outside (outward normals).
-        for (int i = 0; i < nLongitude; ++i) cells.push_back({0, ring(1, i), ring(1, i + 1)});
+        for (int i = 0; i < nLongitude; ++i)
+            cells.push_back({0, ring(1, i), ring(1, i + 1)});
         for (int j = 1; j < nLatitude - 1; ++j) {
             for (int i = 0; i < nLongitude; ++i) {
                 cells.push_back({ring(j, i), ring(j + 1, i), ring(j + 1, i + 1)});

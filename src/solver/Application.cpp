@@ -19,7 +19,8 @@ Application::Application(int argc, char* argv[], std::string name, std::string s
                          std::vector<Option> switches)
     : name_(std::move(name)), summary_(std::move(summary)), switches_(std::move(switches)) {
     std::cout.setf(std::ios::unitbuf); // the log is followed live (tail -f log.mpmFoam)
-    for (int i = 0; i < argc; ++i) commandLine_ += (i ? " " : "") + std::string(argv[i]);
+    for (int i = 0; i < argc; ++i)
+        commandLine_ += (i ? " " : "") + std::string(argv[i]);
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "-help" || a == "--help" || a == "-h") {
@@ -50,7 +51,8 @@ void Application::usage(std::ostream& os) const {
     all.emplace_back("-case <dir>", "case directory (default: the current directory)");
     all.emplace_back("-help", "print this usage and exit");
     std::sort(all.begin(), all.end());
-    for (const auto& [o, d] : all) os << "  " << std::left << std::setw(22) << o << d << '\n';
+    for (const auto& [o, d] : all)
+        os << "  " << std::left << std::setw(22) << o << d << '\n';
     os << "\nSignals: SIGUSR1 writes now and continues; SIGUSR2 or SIGTERM write and stop.\n"
           "A file named 'stop' in the case directory also writes and stops.\n\n";
 }
@@ -108,8 +110,8 @@ void ProgressMeter::print() {
     log() << "Time = " << std::setprecision(time_.writePrecision()) << time_.value()
           << "  deltaT = " << time_.deltaT() << "  steps/s = " << std::setprecision(4) << rate
           << "  ETA = " << s / 3600 << 'h' << std::setw(2) << std::setfill('0') << (s / 60) % 60
-          << 'm' << std::setw(2) << s % 60 << 's' << std::setfill(' ') << "  wrote "
-          << time_.name() << "/\n";
+          << 'm' << std::setw(2) << s % 60 << 's' << std::setfill(' ') << "  wrote " << time_.name()
+          << "/\n";
     lastWall_ = now;
     lastIndex_ = time_.index();
 }

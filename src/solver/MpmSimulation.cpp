@@ -4,9 +4,9 @@
 #include "core/Log.hpp"
 #include "core/SymmetricEigen.hpp"
 #include "io/ParticleFile.hpp"
-#include "rigid/RigidBodyOutput.hpp"
 #include "particles/Region.hpp"
 #include "particles/Seeding.hpp"
+#include "rigid/RigidBodyOutput.hpp"
 #include "solver/Reduce.hpp"
 
 #include <omp.h>
@@ -22,7 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double wallTime() { return omp_get_wtime(); }
+double wallTime() {
+    return omp_get_wtime();
+}
 
 /// Adds the wall time of a scope to a phase counter.
 class ScopedTimer {
@@ -39,7 +41,8 @@ private:
 
 template <int dim> Vec<dim> toVec(const std::vector<double>& v) {
     Vec<dim> r;
-    for (int d = 0; d < dim; ++d) r[d] = v[d];
+    for (int d = 0; d < dim; ++d)
+        r[d] = v[d];
     return r;
 }
 
@@ -90,8 +93,10 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
                                   const Dictionary& gridDict)
     : case_(cs), options_(options), grid_(gridDict) {
     gridDict.checkUnknownKeys();
-    for (auto& r : reactions_) r.setZero();
-    for (const auto& f : grid_.faces()) hasOpenFace_ |= f.kind == FaceCondition::Kind::Open;
+    for (auto& r : reactions_)
+        r.setZero();
+    for (const auto& f : grid_.faces())
+        hasOpenFace_ |= f.kind == FaceCondition::Kind::Open;
 
     if (cs.exists("constant/g")) {
         const Dictionary g = cs.read("constant/g");
@@ -155,8 +160,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         for (const auto& [t, n] : dirs)
             if (std::fabs(t - time.startTime()) <= 1e-12 * std::max(1.0, t)) from = n;
         if (from.empty() && time.startTime() != 0.0)
-            time.dict().error("startTime", "no time directory " +
-                                               timeName(time.startTime(), 6) +
+            time.dict().error("startTime", "no time directory " + timeName(time.startTime(), 6) +
                                                " with particles.vtu to start from");
     }
 
@@ -177,23 +181,27 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     transfer_ = Transfer<dim>::create(case_.read("system/mpmSchemes"), gimpHalfWidth());
 
     maxSpeed_ = 0;
-    for (const auto& v : particles_.v) maxSpeed_ = std::max(maxSpeed_, v.norm());
-    for (const auto& b : bodies_) maxSpeed_ = std::max(maxSpeed_, b->velocity().norm());
+    for (const auto& v : particles_.v)
+        maxSpeed_ = std::max(maxSpeed_, v.norm());
+    for (const auto& b : bodies_)
+        maxSpeed_ = std::max(maxSpeed_, b->velocity().norm());
     lightestMass_ = 1e300;
-    for (double m : particles_.mass) lightestMass_ = std::min(lightestMass_, m);
+    for (double m : particles_.mass)
+        lightestMass_ = std::min(lightestMass_, m);
     checkDeltaT();
 
     // Energy budget for the blow-up check: what the initial state and gravity could supply.
     const State<dim> s = state();
     const Index n = static_cast<Index>(particles_.size());
-    const double kinetic = deterministicSum(n, [&](Index i) {
-        return 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm();
+    const double kinetic = deterministicSum(
+        n, [&](Index i) { return 0.5 * particles_.mass[i] * particles_.v[i].squaredNorm(); });
+    const double strain = deterministicSum(n, [&](Index i) {
+        return materials_[particles_.material[i]]->strainEnergy(particles_, i);
     });
-    const double strain = deterministicSum(
-        n, [&](Index i) { return materials_[particles_.material[i]]->strainEnergy(particles_, i); });
     const double mass = deterministicSum(n, [&](Index i) { return particles_.mass[i]; });
     double extent = 0;
-    for (int d = 0; d < dim; ++d) extent += std::fabs(gravity_[d]) * (grid_.hi()[d] - grid_.lo()[d]);
+    for (int d = 0; d < dim; ++d)
+        extent += std::fabs(gravity_[d]) * (grid_.hi()[d] - grid_.lo()[d]);
     double bodyEnergy = 0;
     bool driven = false;
     for (const auto& b : bodies_) {
@@ -208,17 +216,20 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
 
     snapshot();
     if (options_.dryRun) return;
-    for (auto& f : functions_) f->open(case_, time, state());
+    for (auto& f : functions_)
+        f->open(case_, time, state());
     if (fresh) {
         write();
-        for (auto& f : functions_) f->executeNow(state(), time);
+        for (auto& f : functions_)
+            f->executeNow(state(), time);
     }
 }
 
 template <int dim> double MpmSimulation<dim>::gimpHalfWidth() const {
     // GIMP's particle half-width l_p = ½ V_p^(1/dim), in cell units, from the mean seeding volume.
     double meanSize = 0;
-    for (double v0 : particles_.volume0) meanSize += std::pow(v0, 1.0 / dim);
+    for (double v0 : particles_.volume0)
+        meanSize += std::pow(v0, 1.0 / dim);
     return 0.5 * meanSize / static_cast<double>(particles_.size()) * grid_.invH();
 }
 
@@ -262,8 +273,7 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     preloading_ = false;
     times_ = PhaseTimes{};
     log() << "Gravity preload: " << k << " steps, kinetic energy " << kinetic << " J ("
-          << kinetic / std::max(peak, 1e-300) << " of its peak), " << wallTime() - t0
-          << " s\n";
+          << kinetic / std::max(peak, 1e-300) << " of its peak), " << wallTime() - t0 << " s\n";
 }
 
 template <int dim> void MpmSimulation<dim>::seed() {
@@ -277,9 +287,10 @@ template <int dim> void MpmSimulation<dim>::seed() {
             if (materialNames_[m] == matName) mat = static_cast<int>(m);
         if (mat < 0) {
             std::string valid;
-            for (const auto& n : materialNames_) valid += (valid.empty() ? "" : ", ") + n;
-            set.error("material", "unknown material '" + matName +
-                                      "'; constant/materials defines: " + valid);
+            for (const auto& n : materialNames_)
+                valid += (valid.empty() ? "" : ", ") + n;
+            set.error("material",
+                      "unknown material '" + matName + "'; constant/materials defines: " + valid);
         }
         const auto region = Region<dim>::create(set.subDict("region"));
         {
@@ -355,14 +366,15 @@ template <int dim> void MpmSimulation<dim>::seed() {
                                       static_cast<std::uint64_t>(rngSeed));
             if (!xs.empty()) volume = region->volume() / static_cast<double>(xs.size());
         }
-        if (xs.empty()) set.error("region", "the region seeds no particles (is it smaller "
-                                            "than a cell, or outside the grid?)");
+        if (xs.empty())
+            set.error("region", "the region seeds no particles (is it smaller "
+                                "than a cell, or outside the grid?)");
         for (const auto& x : xs)
             for (int d = 0; d < dim; ++d)
                 if (x[d] < grid_.lo()[d] || x[d] > grid_.hi()[d]) {
                     std::ostringstream os;
-                    os << "particles lie outside the grid bounds (a particle at ("
-                       << x.transpose() << ") is outside [" << grid_.lo().transpose() << "] – ["
+                    os << "particles lie outside the grid bounds (a particle at (" << x.transpose()
+                       << ") is outside [" << grid_.lo().transpose() << "] – ["
                        << grid_.hi().transpose() << "] of constant/grid)";
                     set.error("region", os.str());
                 }
@@ -375,7 +387,8 @@ template <int dim> void MpmSimulation<dim>::seed() {
             up = -gravity_ / gNorm;
             if (!surfaceGiven) {
                 surface = -1e300;
-                for (const auto& x : xs) surface = std::max(surface, up.dot(x));
+                for (const auto& x : xs)
+                    surface = std::max(surface, up.dot(x));
                 surface += 0.5 * std::pow(volume, 1.0 / dim);
             }
         }
@@ -499,12 +512,13 @@ template <int dim> double MpmSimulation<dim>::stableDeltaT() const {
 template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
     if (time_->adjustTimeStep()) return;
     double critical = grid_.h() / (maxWaveSpeed_ + maxSpeed_);
-    if (coupling_) critical = std::min(critical, coupling_->stableDeltaT(lightestMass_, maxWaveSpeed_));
+    if (coupling_)
+        critical = std::min(critical, coupling_->stableDeltaT(lightestMass_, maxWaveSpeed_));
     if (time_->fixedDeltaT() <= critical) return;
     std::ostringstream os;
-    os << "deltaT = " << time_->fixedDeltaT() << " s exceeds the stable limit h/(c + |v|max) = "
-       << critical << " s (h = " << grid_.h() << " m, c = " << maxWaveSpeed_
-       << " m/s, |v|max = " << maxSpeed_ << " m/s)";
+    os << "deltaT = " << time_->fixedDeltaT()
+       << " s exceeds the stable limit h/(c + |v|max) = " << critical << " s (h = " << grid_.h()
+       << " m, c = " << maxWaveSpeed_ << " m/s, |v|max = " << maxSpeed_ << " m/s)";
     if (!time_->allowUnstableDeltaT())
         time_->dict().error("deltaT", os.str() + "; reduce deltaT, set adjustTimeStep: yes, or "
                                                  "set allowUnstableDeltaT: yes to run anyway");
@@ -550,7 +564,8 @@ template <int dim> void MpmSimulation<dim>::sortParticles() {
 
 template <int dim> void MpmSimulation<dim>::couple(double dt) {
     ScopedTimer timer(times_.contact);
-    for (auto& b : bodies_) b->clearForces();
+    for (auto& b : bodies_)
+        b->clearForces();
     coupling_->computeForces(particles_, particles_.slip, bodies_, waveOf_, criticalDensityOf_,
                              sort_, grid_, dt);
 }
@@ -565,8 +580,8 @@ template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
         coupling_->enforceGap(particles_, bodies_, sort_, grid_);
         for (const auto& b : bodies_)
             if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
-                throw RunError("step " + std::to_string(time_->index()) +
-                               ": rigid body '" + b->name() + "' has a non-finite state");
+                throw RunError("step " + std::to_string(time_->index()) + ": rigid body '" +
+                               b->name() + "' has a non-finite state");
     }
 }
 
@@ -577,17 +592,19 @@ template <int dim> void MpmSimulation<dim>::removeOutflow() {
     // Beyond these bounds on an open side a particle has left (±inf on walled sides).
     Vec<dim> lo, hi;
     for (int d = 0; d < dim; ++d) {
-        lo[d] = grid_.faces()[2 * d].kind == FaceCondition::Kind::Open
-                    ? grid_.lo()[d] - grid_.h() : -1e300;
+        lo[d] = grid_.faces()[2 * d].kind == FaceCondition::Kind::Open ? grid_.lo()[d] - grid_.h()
+                                                                       : -1e300;
         hi[d] = grid_.faces()[2 * d + 1].kind == FaceCondition::Kind::Open
-                    ? grid_.hi()[d] + grid_.h() : 1e300;
+                    ? grid_.hi()[d] + grid_.h()
+                    : 1e300;
     }
     auto outside = [&](Index i) {
         return ((particles_.x[i] - lo).minCoeff() < 0) || ((hi - particles_.x[i]).minCoeff() < 0);
     };
     Index anyOut = 0;
 #pragma omp parallel for schedule(static) reduction(+ : anyOut)
-    for (Index i = 0; i < n; ++i) anyOut += outside(i);
+    for (Index i = 0; i < n; ++i)
+        anyOut += outside(i);
     if (anyOut == 0) return;
     std::vector<Index> keep;
     keep.reserve(n);
@@ -613,11 +630,13 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         }
         if constexpr (dim == 2) {
             for (int j = lo[1]; j < hi[1]; ++j)
-                for (int i = lo[0]; i < hi[0]; ++i) fn(grid_.nodeIndex(IVec<dim>(i, j)));
+                for (int i = lo[0]; i < hi[0]; ++i)
+                    fn(grid_.nodeIndex(IVec<dim>(i, j)));
         } else {
             for (int k = lo[2]; k < hi[2]; ++k)
                 for (int j = lo[1]; j < hi[1]; ++j)
-                    for (int i = lo[0]; i < hi[0]; ++i) fn(grid_.nodeIndex(IVec<dim>(i, j, k)));
+                    for (int i = lo[0]; i < hi[0]; ++i)
+                        fn(grid_.nodeIndex(IVec<dim>(i, j, k)));
         }
     };
     const Index nOld = static_cast<Index>(activeBlocks_.size());
@@ -636,12 +655,14 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
 }
 
-template <int dim> void MpmSimulation<dim>::applyBoundaryConditions(bool recordReactions, double dt) {
+template <int dim>
+void MpmSimulation<dim>::applyBoundaryConditions(bool recordReactions, double dt) {
     std::vector<Vec<dim>>& vel = recordReactions ? grid_.v : grid_.vOld;
     if (recordReactions) {
         touched_.resize(grid_.numNodes(), 0);
         for (int f = 0; f < Grid<dim>::NumFaces; ++f)
-            for (Index i : grid_.faceNodes(f)) touched_[i] = 0;
+            for (Index i : grid_.faceNodes(f))
+                touched_[i] = 0;
     }
     for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
         const FaceCondition& fc = grid_.faces()[f];
@@ -707,7 +728,8 @@ template <int dim> void MpmSimulation<dim>::gridVelocity() {
             const double m = grid_.mass[node];
             grid_.vOld[node] = m > 0 ? Vec<dim>(grid_.momentum[node] / m) : Vec<dim>::Zero();
             int d = 0;
-            while (d < dim && ++i[d] >= hi[d]) i[d] = lo[d], ++d;
+            while (d < dim && ++i[d] >= hi[d])
+                i[d] = lo[d], ++d;
             if (d == dim) break;
         }
     }
@@ -750,7 +772,8 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
                 grid_.v[node] = v0 + (dt / m) * f;
             }
             int d = 0;
-            while (d < dim && ++i[d] >= hi[d]) i[d] = lo[d], ++d;
+            while (d < dim && ++i[d] >= hi[d])
+                i[d] = lo[d], ++d;
             if (d == dim) break;
         }
     }
@@ -779,8 +802,8 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
             if (particles_.v[i].norm() > particles_.v[worst].norm()) worst = i;
         std::ostringstream os;
         os << "is the fastest of a kinetic-energy blow-up: E_k = " << st.kineticEnergy
-           << " J exceeds 10× what the initial state and gravity can supply ("
-           << energyBudget_ / 10 << " J)";
+           << " J exceeds 10× what the initial state and gravity can supply (" << energyBudget_ / 10
+           << " J)";
         fail("G2P", worst, os.str());
     }
 }
@@ -809,7 +832,8 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
 
 template <int dim> void MpmSimulation<dim>::executeFunctions() {
     ScopedTimer timer(times_.functions);
-    for (auto& f : functions_) f->execute(state(), *time_);
+    for (auto& f : functions_)
+        f->execute(state(), *time_);
 }
 
 template <int dim> void MpmSimulation<dim>::write() {

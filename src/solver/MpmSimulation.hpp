@@ -22,8 +22,8 @@ namespace mpm {
 
 /// Wall time spent in each phase of the step [s].
 struct PhaseTimes {
-    double sort = 0, contact = 0, p2g = 0, grid = 0, g2p = 0, constitutive = 0, bodies = 0,
-           io = 0, functions = 0;
+    double sort = 0, contact = 0, p2g = 0, grid = 0, g2p = 0, constitutive = 0, bodies = 0, io = 0,
+           functions = 0;
 };
 
 /// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of DESIGN §4.
@@ -72,8 +72,12 @@ private:
     void snapshot();
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
     State<dim> state() const {
-        return {particles_, grid_,   materials_,
-                gravity_,   reactions_, bodies_,
+        return {particles_,
+                grid_,
+                materials_,
+                gravity_,
+                reactions_,
+                bodies_,
                 coupling_ ? coupling_->minimumGapSeen() : 1e300,
                 coupling_ ? coupling_->numContacts() : 0};
     }

@@ -17,11 +17,13 @@ template <class Fn> double deterministicSum(Index n, Fn&& f) {
     for (Index c = 0; c < nChunks; ++c) {
         double s = 0.0;
         const Index end = std::min(n, (c + 1) * chunk);
-        for (Index i = c * chunk; i < end; ++i) s += f(i);
+        for (Index i = c * chunk; i < end; ++i)
+            s += f(i);
         partial[c] = s;
     }
     double total = 0.0;
-    for (double s : partial) total += s;
+    for (double s : partial)
+        total += s;
     return total;
 }
 

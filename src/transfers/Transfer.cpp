@@ -221,8 +221,8 @@ private:
                     if constexpr (Affine) mC = (m * h) * p.C[i];
                     Mat<dim> stressTerm = Mat<dim>::Zero();
                     if constexpr (Stress)
-                        stressTerm = (-p.volume[i] * invH) *
-                                     p.stress[i].template topLeftCorner<dim, dim>();
+                        stressTerm =
+                            (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
                     if constexpr (dim == 3) {
                         scatter3<Momentum, Stress>(s, g, m, mv, mC, stressTerm);
                     } else {
@@ -261,14 +261,14 @@ private:
             if constexpr (dim == 3) {
                 gather3<Grad, Flip>(s, g, vPic, dv, B, L);
             } else {
-                forStencil(s, [&](Index node, double wgt, const Vec<dim>& grad,
-                                  const Vec<dim>& offset) {
-                    const Vec<dim>& vi = g.v[node];
-                    vPic += wgt * vi;
-                    if constexpr (Flip) dv += wgt * (vi - g.vOld[node]);
-                    if constexpr (Affine) B.noalias() += (wgt * vi) * offset.transpose();
-                    if constexpr (Grad) L.noalias() += vi * grad.transpose();
-                });
+                forStencil(
+                    s, [&](Index node, double wgt, const Vec<dim>& grad, const Vec<dim>& offset) {
+                        const Vec<dim>& vi = g.v[node];
+                        vPic += wgt * vi;
+                        if constexpr (Flip) dv += wgt * (vi - g.vOld[node]);
+                        if constexpr (Affine) B.noalias() += (wgt * vi) * offset.transpose();
+                        if constexpr (Grad) L.noalias() += vi * grad.transpose();
+                    });
             }
             if constexpr (Affine) {
                 p.v[i] = vPic;

@@ -245,7 +245,8 @@ def _save_index(index):
     os.replace(path + ".tmp", path)
 
 
-def run_variant(study, name, base, overrides, log=print):
+def run_variant(study, name, base, overrides, log=print, run=True):
+    """Run one variant (or reuse its earlier result); with run=False only reuse: None if none."""
     os.makedirs(os.path.join(RUNS, study), exist_ok=True)
     case = os.path.join(RUNS, study, name)
     key = variant_key(base, overrides)
@@ -256,14 +257,17 @@ def run_variant(study, name, base, overrides, log=print):
             log(f"  {study}/{name}: done before, skipped")
             return res
         log(f"  {study}/{name}: the overrides changed, running again")
+    index = _index()
+    other = index.get(key)
+    have_other = other and other != f"{study}/{name}" and \
+        os.path.exists(os.path.join(RUNS, other, "result.json"))
+    if not run and not have_other:
+        return None
     if os.path.islink(case):
         os.remove(case)
     elif os.path.exists(case):
         shutil.rmtree(case)
-    index = _index()
-    other = index.get(key)
-    if other and other != f"{study}/{name}" and \
-            os.path.exists(os.path.join(RUNS, other, "result.json")):
+    if have_other:
         os.symlink(os.path.join("..", other), case)
         log(f"  {study}/{name}: same case as {other}, linked")
         return json.load(open(done))
@@ -274,6 +278,7 @@ def run_variant(study, name, base, overrides, log=print):
     apply_overrides(case, overrides)
     env = dict(os.environ)
     env.setdefault("OMP_NUM_THREADS", "2")
+    env.setdefault("OMP_WAIT_POLICY", "passive")   # the machine is shared: no spin-waiting
     log(f"  {study}/{name}: running ...", end="", flush=True)
     t0 = time.time()
     with open(os.path.join(case, "log.mpmFoam"), "w") as out, \
@@ -295,12 +300,18 @@ def run_variant(study, name, base, overrides, log=print):
     return res
 
 
-def run_study(study, spec, log=print):
+def run_study(study, spec, log=print, only=None):
+    """Run the variants of a study (only: the names to run; the others are taken if they
+    were run before, else left out) and write runs/<study>/results.json."""
     log(f"study {study}: {len(spec['variants'])} variants (base {spec['base']})")
     results = {"study": study, "base": spec["base"], "variants": {}}
     for v in spec["variants"]:
         overrides = list(spec.get("common", [])) + list(v["overrides"])
-        res = run_variant(study, v["name"], os.path.join(ROOT, spec["base"]), overrides, log)
+        res = run_variant(study, v["name"], os.path.join(ROOT, spec["base"]), overrides, log,
+                          run=only is None or v["name"] in only)
+        if res is None:
+            log(f"  {study}/{v['name']}: not run (left out)")
+            continue
         results["variants"][v["name"]] = {"params": v.get("params", {}), "result": res}
     path = os.path.join(RUNS, study, "results.json")
     with open(path, "w") as f:
@@ -317,6 +328,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("studies", nargs="*")
     ap.add_argument("--list", action="store_true")
+    ap.add_argument("--only", help="comma-separated variants to run (others: reused if run before)")
     ap.add_argument("--base")
     ap.add_argument("--study")
     ap.add_argument("--variant")
@@ -338,7 +350,8 @@ def main():
         return 0
     status = 0
     for name in a.studies:
-        results = run_study(name, S.STUDIES[name])
+        results = run_study(name, S.STUDIES[name],
+                            only=a.only.split(",") if a.only else None)
         for label, state, detail in S.check(name, results):
             print(f"  [{state}] {label}: {detail}")
             if state == "VIOLATION":

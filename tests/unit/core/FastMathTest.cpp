@@ -13,9 +13,11 @@ TEST(FastMath, LogMatchesStdLogToAFewUlp) {
     for (int k = 0; k < 100000; ++k) {
         // Log-uniform over 1e-300 … 1e300, and a dense sample near 1 where ln x → 0.
         const double e = (static_cast<double>(rng() >> 11) * 0x1.0p-53 - 0.5) * 600.0;
-        for (double x : {std::pow(10.0, e), 1.0 + 1e-3 * (static_cast<double>(rng() >> 11) * 0x1.0p-53 - 0.5)}) {
+        for (double x : {std::pow(10.0, e),
+                         1.0 + 1e-3 * (static_cast<double>(rng() >> 11) * 0x1.0p-53 - 0.5)}) {
             const double ref = std::log(x);
-            EXPECT_NEAR(fastLog(x), ref, 4e-16 * std::fabs(ref) + 2e-16 * std::fabs(x - 1.0) + 1e-300)
+            EXPECT_NEAR(fastLog(x), ref,
+                        4e-16 * std::fabs(ref) + 2e-16 * std::fabs(x - 1.0) + 1e-300)
                 << "x = " << x;
         }
     }

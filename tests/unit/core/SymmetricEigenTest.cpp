@@ -165,8 +165,7 @@ std::vector<Mat3> mixedMatrices(std::mt19937_64& rng, int count) {
     return m;
 }
 
-template <int Lanes>
-void checkBatch(unsigned seed) {
+template <int Lanes> void checkBatch(unsigned seed) {
     std::mt19937_64 rng(seed);
     for (int trial = 0; trial < 50; ++trial) {
         std::vector<Mat3> A = mixedMatrices(rng, Lanes);

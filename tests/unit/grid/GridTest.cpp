@@ -30,8 +30,7 @@ InputError catchInputError(const std::function<void()>& f) {
 }
 
 /// Integer coordinates of node k (x fastest).
-template <int dim>
-IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
+template <int dim> IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
     IVec<dim> c;
     for (int d = 0; d < dim; ++d) {
         c[d] = static_cast<int>(k % g.nodes()[d]);
@@ -182,8 +181,7 @@ TEST(Grid, OtherInputErrors) {
 // ---------------------------------------------------------------------------------------------
 // BlockSort colouring
 
-template <int dim>
-Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed) {
+template <int dim> Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed) {
     Particles<dim> p;
     p.resize(n);
     std::mt19937_64 rng(seed);
@@ -195,8 +193,7 @@ Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed) {
 }
 
 /// Nodes any kernel's stencil can touch from xh: [floor(xh) - 1, floor(xh) + 2] per axis.
-template <int dim>
-void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std::set<Index>& out) {
+template <int dim> void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std::set<Index>& out) {
     IVec<dim> f;
     for (int d = 0; d < dim; ++d)
         f[d] = static_cast<int>(std::floor(xh[d])) - 1;
@@ -212,8 +209,7 @@ void stencilNodes(const Grid<dim>& g, const Vec<dim>& xh, std::set<Index>& out) 
     }
 }
 
-template <int dim>
-void checkColouring(const Grid<dim>& g, int n, unsigned seed) {
+template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed) {
     const Particles<dim> p = randomParticles(g, n, seed);
     BlockSort<dim> sort;
     ASSERT_EQ(sort.update(p, g), -1);

@@ -51,7 +51,9 @@ std::string xmlHeader(const fs::path& file) {
     return text.substr(0, text.find("<AppendedData"));
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+bool sameBits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof(double)) == 0;
+}
 
 PointCloud makeCloud(std::size_t n) {
     PointCloud cloud;

@@ -15,8 +15,7 @@ namespace mpm {
 namespace {
 
 /// Call fn(kernel, name) for every kernel, GIMP with two particle half-widths.
-template <class Fn>
-void forEachKernel(Fn&& fn) {
+template <class Fn> void forEachKernel(Fn&& fn) {
     fn(LinearKernel{}, "linear");
     GimpKernel g1;
     g1.l = 0.25;
@@ -61,8 +60,7 @@ std::vector<double> kinks(const CubicBSplineKernel&) {
     return {0.0};
 }
 
-template <class K>
-double distanceToKink(const K& k, double xh) {
+template <class K> double distanceToKink(const K& k, double xh) {
     const double f = xh - std::floor(xh);
     double d = 1.0;
     for (double c : kinks(k)) {
@@ -87,8 +85,7 @@ double supportRadius(const CubicBSplineKernel&) {
 }
 
 /// Weight (or derivative) of grid node `node` at xh; zero outside the stencil.
-template <class K>
-double weightAt(const K& k, double xh, int node, bool derivative = false) {
+template <class K> double weightAt(const K& k, double xh, int node, bool derivative = false) {
     double w[K::Width], dw[K::Width];
     const int base = k.eval(xh, w, dw);
     const int j = node - base;
@@ -209,8 +206,7 @@ TEST(Kernels, ReproduceLinearFields) {
     });
 }
 
-template <class K>
-void expectConstantInertia(const K& k) {
+template <class K> void expectConstantInertia(const K& k) {
     // Σ w_k (x_k - xh)² = D / h², the APIC inertia: constant for B-splines [000 Eq. 13].
     for (double xh : samplePoints(8)) {
         double w[K::Width], dw[K::Width];
@@ -257,8 +253,7 @@ TEST(Kernels, KnownValues) {
 
 /// Tensor product in dim dimensions: weights sum to one, gradients to zero, and the gradient of
 /// the linear field x reproduces the identity.
-template <int dim, class K>
-void checkTensorProduct(const K& k, unsigned seed) {
+template <int dim, class K> void checkTensorProduct(const K& k, unsigned seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(1.0, 30.0);
     constexpr int W = K::Width;

@@ -62,8 +62,7 @@ Mat3 randomRotation(std::mt19937_64& rng) {
 
 /// bᵉ = R exp(2ε) Rᵀ for principal Hencky strains ε with volumetric part ev and a deviatoric part
 /// of norm dev in a random direction, in random axes R (plane strain: R about z).
-template <int dim>
-Mat3 randomElasticState(std::mt19937_64& rng, double ev, double dev) {
+template <int dim> Mat3 randomElasticState(std::mt19937_64& rng, double ev, double dev) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Vec3 d(u(rng), u(rng), u(rng));
     d.array() -= d.mean();
@@ -181,8 +180,8 @@ TEST(DruckerPrager, BadInputIsInputError) {
 }
 
 TEST(DruckerPrager, UnknownTypeListsGranularTypes) {
-    const InputError e = catchInputError(
-        [] { Material<3>::create(parse("type: sandy\ndensity: 1600\n"), "m"); });
+    const InputError e =
+        catchInputError([] { Material<3>::create(parse("type: sandy\ndensity: 1600\n"), "m"); });
     const std::string msg = e.what();
     EXPECT_EQ(e.key(), "type") << msg;
     EXPECT_NE(msg.find("druckerPrager"), std::string::npos) << msg;
@@ -250,10 +249,18 @@ template <int dim> void checkReturn(double psi, unsigned seed) {
     }
 }
 
-TEST(DruckerPrager, ReturnLiesOnYieldSurfaceIsochoric3D) { checkReturn<3>(0.0, 11); }
-TEST(DruckerPrager, ReturnLiesOnYieldSurfaceIsochoric2D) { checkReturn<2>(0.0, 12); }
-TEST(DruckerPrager, ReturnLiesOnYieldSurfaceDilatant3D) { checkReturn<3>(10.0, 13); }
-TEST(DruckerPrager, ReturnLiesOnYieldSurfaceAssociated2D) { checkReturn<2>(30.0, 14); }
+TEST(DruckerPrager, ReturnLiesOnYieldSurfaceIsochoric3D) {
+    checkReturn<3>(0.0, 11);
+}
+TEST(DruckerPrager, ReturnLiesOnYieldSurfaceIsochoric2D) {
+    checkReturn<2>(0.0, 12);
+}
+TEST(DruckerPrager, ReturnLiesOnYieldSurfaceDilatant3D) {
+    checkReturn<3>(10.0, 13);
+}
+TEST(DruckerPrager, ReturnLiesOnYieldSurfaceAssociated2D) {
+    checkReturn<2>(30.0, 14);
+}
 
 TEST(DruckerPrager, DilationRaisesPressureAndLowersElasticVolume) {
     const auto iso = create<3>();
@@ -268,7 +275,7 @@ TEST(DruckerPrager, DilationRaisesPressureAndLowersElasticVolume) {
     double pa, qa, pb, qb;
     invariants(a.stress[0], pa, qa);
     invariants(b.stress[0], pb, qb);
-    EXPECT_GT(pb, pa);                                     // dilatancy: p rises
+    EXPECT_GT(pb, pa);                                       // dilatancy: p rises
     EXPECT_LT(b.be[0].determinant(), a.be[0].determinant()); // elastic volume falls
     EXPECT_GT(qb, qa);
     EXPECT_LT(b.plasticStrain[0], a.plasticStrain[0]);
@@ -278,8 +285,8 @@ TEST(DruckerPrager, DilationRaisesPressureAndLowersElasticVolume) {
 /// plastic strain; with L ≠ 0, in any order, for sizes around the batch width.
 template <int dim> void checkElastic(int n, unsigned seed) {
     const auto m = create<dim>();
-    const auto hencky = Material<dim>::create(
-        parse("type: henckyElastic\ndensity: 1600\nE: 1e7\nnu: 0.3\n"), "h");
+    const auto hencky =
+        Material<dim>::create(parse("type: henckyElastic\ndensity: 1600\nE: 1e7\nnu: 0.3\n"), "h");
     const ElasticConstants c(1e7, 0.3);
     const double mu = frictionCoefficient(30.0);
     std::mt19937_64 rng(seed);
@@ -344,7 +351,7 @@ TEST(DruckerPrager, GasifiedPointsCarryNoStress) {
     std::mt19937_64 rng(8);
     Particles<3> p = makeParticles<3>(12);
     for (int i = 0; i < 12; ++i) {
-        p.be[i] = randomElasticState<3>(rng, -0.01, 0.002 * (i % 4)); // elastic or plastic
+        p.be[i] = randomElasticState<3>(rng, -0.01, 0.002 * (i % 4));        // elastic or plastic
         p.volume[i] = p.volume0[i] * (i < 6 ? 1.0 + 1e-3 * (i + 1) : 0.999); // ρ < ρ₀ for i < 6
         p.plasticStrain[i] = 0.5;
     }
@@ -447,8 +454,7 @@ TEST(DruckerPrager, InitialiseAndStrainEnergy) {
     EXPECT_EQ(p.stress[0], sigma0);
     EXPECT_EQ(p.be[1], Mat3::Identity());
     EXPECT_LE((HenckyElastic<3>::kirchhoff(c, p.be[0]) - sigma0).norm(), 1e-9 * sigma0.norm());
-    EXPECT_NEAR(m->strainEnergy(p, 0), HenckyElastic<3>::energyDensity(c, p.be[0]) * 1e-3,
-                1e-15);
+    EXPECT_NEAR(m->strainEnergy(p, 0), HenckyElastic<3>::energyDensity(c, p.be[0]) * 1e-3, 1e-15);
     EXPECT_EQ(m->strainEnergy(p, 1), 0.0);
 }
 

@@ -221,8 +221,7 @@ TEST(HenckyElastic, InitialiseFromStress) {
 /// updateStress (batched, vectorised) against the scalar formulas: bᵉ ← f bᵉ fᵀ with
 /// f = 1 + Δt L, σ = τ(bᵉ) / J with J = V / V⁰, for particle counts that are not multiples of
 /// the batch width and ids in any order.
-template <int dim>
-void checkHenckyUpdate(int n, unsigned seed) {
+template <int dim> void checkHenckyUpdate(int n, unsigned seed) {
     const ElasticConstants c(2e7, 0.3);
     const auto m =
         Material<dim>::create(parse("type: henckyElastic\ndensity: 2000\nE: 2e7\nnu: 0.3\n"), "m");

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // μ(I) rheology on Hencky elasticity: rate-dependent return, Drucker–Prager limit, apex,
 // trans-phase gasification, input checks.
+#include "materials/MuI.hpp"
 #include "materials/DruckerPrager.hpp"
 #include "materials/HenckyElastic.hpp"
 #include "materials/Material.hpp"
-#include "materials/MuI.hpp"
 
 #include "core/SymmetricEigen.hpp"
 
@@ -106,7 +106,9 @@ std::vector<Index> allIds(std::size_t n) {
 const double muS = frictionCoefficient(30.0), mu2 = frictionCoefficient(40.0), I0 = 0.278;
 
 /// μ(I) [000 Eq. 9].
-double muOfI(double I) { return I > 0 ? muS + (mu2 - muS) / (I0 / I + 1.0) : muS; }
+double muOfI(double I) {
+    return I > 0 ? muS + (mu2 - muS) / (I0 / I + 1.0) : muS;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Input
@@ -252,8 +254,12 @@ template <int dim> void checkReturn(unsigned seed) {
     }
 }
 
-TEST(MuI, ReturnLiesOnRateDependentYieldSurface3D) { checkReturn<3>(41); }
-TEST(MuI, ReturnLiesOnRateDependentYieldSurface2D) { checkReturn<2>(42); }
+TEST(MuI, ReturnLiesOnRateDependentYieldSurface3D) {
+    checkReturn<3>(41);
+}
+TEST(MuI, ReturnLiesOnRateDependentYieldSurface2D) {
+    checkReturn<2>(42);
+}
 
 /// Same trial states through DruckerPrager (ψ = 0) and μ(I).
 template <int dim>
@@ -278,8 +284,7 @@ void compareWithDruckerPrager(const Material<dim>& mui, double dt, double tol, u
     for (int i = 0; i < n; ++i) {
         EXPECT_LE((p.stress[i] - q.stress[i]).norm(), tol * q.stress[i].norm()) << i;
         EXPECT_LE((p.be[i] - q.be[i]).norm(), tol) << i;
-        EXPECT_NEAR(p.plasticStrain[i], q.plasticStrain[i], tol * (1e-6 + q.plasticStrain[i]))
-            << i;
+        EXPECT_NEAR(p.plasticStrain[i], q.plasticStrain[i], tol * (1e-6 + q.plasticStrain[i])) << i;
     }
 }
 
@@ -320,8 +325,8 @@ TEST(MuI, FrictionRisesWithShearRateUpToMu2) {
 
 TEST(MuI, ElasticStatesMatchHencky) {
     const auto m = createMuI<3>();
-    const auto hencky = Material<3>::create(
-        parse("type: henckyElastic\ndensity: 1600\nE: 1e7\nnu: 0.3\n"), "h");
+    const auto hencky =
+        Material<3>::create(parse("type: henckyElastic\ndensity: 1600\nE: 1e7\nnu: 0.3\n"), "h");
     const ElasticConstants c(1e7, 0.3);
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(0.0, 1.0), s(-1.0, 1.0);

@@ -116,13 +116,14 @@ TEST(RegionTest, PolygonConcaveEitherOrientation) {
 
 TEST(RegionTest, PolygonAreaMatchesSampling) {
     // A star-like concave polygon: the fraction of a fine lattice inside approximates the area.
-    const auto r = makeRegion<2>(
-        "type: polygon\nvertices: [[0, 0], [3, 1], [6, 0], [5, 3], [6, 6], [3, 4], [0, 6], [1, 3]]\n");
+    const auto r = makeRegion<2>("type: polygon\nvertices: [[0, 0], [3, 1], [6, 0], [5, 3], [6, "
+                                 "6], [3, 4], [0, 6], [1, 3]]\n");
     const int n = 600;
     const double h = 6.0 / n;
     int inside = 0;
     for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) inside += r->contains(Vec<2>((i + 0.5) * h, (j + 0.5) * h));
+        for (int j = 0; j < n; ++j)
+            inside += r->contains(Vec<2>((i + 0.5) * h, (j + 0.5) * h));
     }
     EXPECT_NEAR(inside * h * h, r->volume(), 0.01 * r->volume());
     EXPECT_DOUBLE_EQ(r->volume(), 21.0);
@@ -148,8 +149,7 @@ TEST(RegionTest, Errors) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("box"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(makeRegion<3>("type: polygon\nvertices: [[0, 0], [1, 0], [0, 1]]\n"),
-                 InputError);
+    EXPECT_THROW(makeRegion<3>("type: polygon\nvertices: [[0, 0], [1, 0], [0, 1]]\n"), InputError);
 
     EXPECT_THROW(makeRegion<3>("type: sphere\ncentre: [0, 0, 0]\nradius: -1\n"), InputError);
     EXPECT_THROW(makeRegion<2>("type: disk\ncentre: [0, 0]\nradius: 0\n"), InputError);
@@ -161,8 +161,7 @@ TEST(RegionTest, Errors) {
     EXPECT_THROW(makeRegion<3>("type: box\nmin: [0, 0, 0]\nmax: [1, 1, -1]\n"), InputError);
     EXPECT_THROW(makeRegion<2>("type: box\nmin: [0, 0, 0]\nmax: [1, 1, 1]\n"), InputError);
     EXPECT_THROW(makeRegion<2>("type: polygon\nvertices: [[0, 0], [1, 0]]\n"), InputError);
-    EXPECT_THROW(makeRegion<2>("type: polygon\nvertices: [[0, 0], [1, 1], [2, 2]]\n"),
-                 InputError);
+    EXPECT_THROW(makeRegion<2>("type: polygon\nvertices: [[0, 0], [1, 1], [2, 2]]\n"), InputError);
     EXPECT_THROW(makeRegion<2>("type: box\nmin: [0, 0]\nmax: [1, 1]\nmax_: [2, 2]\n"),
                  InputError); // unknown key
     EXPECT_THROW(makeRegion<2>("type: ball\ncentre: [0, 0]\nradius: 1\n"), InputError);

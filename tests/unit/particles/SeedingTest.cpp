@@ -19,7 +19,8 @@ template <int dim> std::unique_ptr<Region<dim>> makeRegion(const std::string& ya
 template <int dim> double minPairDistance(const std::vector<Vec<dim>>& p) {
     double m2 = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < p.size(); ++i) {
-        for (std::size_t j = i + 1; j < p.size(); ++j) m2 = std::min(m2, (p[i] - p[j]).squaredNorm());
+        for (std::size_t j = i + 1; j < p.size(); ++j)
+            m2 = std::min(m2, (p[i] - p[j]).squaredNorm());
     }
     return std::sqrt(m2);
 }
@@ -34,7 +35,8 @@ TEST(SeedingTest, RegularBoxAlignedToGrid2D) {
     EXPECT_TRUE(p[1].isApprox(Vec<2>(0.275, -0.275)));
     EXPECT_TRUE(p[2].isApprox(Vec<2>(0.225, -0.225)));
     EXPECT_TRUE(p[4].isApprox(Vec<2>(0.325, -0.275))); // next cell in x
-    for (const auto& x : p) EXPECT_TRUE(box->contains(x));
+    for (const auto& x : p)
+        EXPECT_TRUE(box->contains(x));
     // Volume check: N (h / n)^2 = box volume.
     EXPECT_NEAR(p.size() * std::pow(h / 2, 2), box->volume(), 1e-12);
 }
@@ -52,7 +54,8 @@ TEST(SeedingTest, RegularDiskVolume) {
     const double h = 0.02;
     const auto p = seedRegular<2>(*disk, Vec<2>::Zero(), h, 2);
     EXPECT_NEAR(p.size() * std::pow(h / 2, 2), disk->volume(), 1e-3 * disk->volume());
-    for (const auto& x : p) EXPECT_TRUE(disk->contains(x));
+    for (const auto& x : p)
+        EXPECT_TRUE(disk->contains(x));
 }
 
 TEST(SeedingTest, RegularBadArguments) {
@@ -62,12 +65,13 @@ TEST(SeedingTest, RegularBadArguments) {
 }
 
 TEST(SeedingTest, PoissonDiskMinimumDistanceAndInside2D) {
-    const auto poly = makeRegion<2>(
-        "type: polygon\nvertices: [[0, 0], [3, 1], [6, 0], [5, 3], [6, 6], [3, 4], [0, 6], [1, 3]]\n");
+    const auto poly = makeRegion<2>("type: polygon\nvertices: [[0, 0], [3, 1], [6, 0], [5, 3], [6, "
+                                    "6], [3, 4], [0, 6], [1, 3]]\n");
     const double r = 0.1;
     const auto p = seedPoissonDisk<2>(*poly, r, 7);
     ASSERT_GT(p.size(), 1000u);
-    for (const auto& x : p) EXPECT_TRUE(poly->contains(x));
+    for (const auto& x : p)
+        EXPECT_TRUE(poly->contains(x));
     EXPECT_GE(minPairDistance<2>(p), r * (1.0 - 1e-12));
     // The concave arms are filled: density close to the bulk value (walls add a little).
     const double rho = p.size() * r * r / poly->volume();
@@ -80,7 +84,8 @@ TEST(SeedingTest, PoissonDiskMinimumDistanceAndInside3D) {
     const double r = 0.08;
     const auto p = seedPoissonDisk<3>(*cyl, r, 3);
     ASSERT_GT(p.size(), 500u);
-    for (const auto& x : p) EXPECT_TRUE(cyl->contains(x));
+    for (const auto& x : p)
+        EXPECT_TRUE(cyl->contains(x));
     EXPECT_GE(minPairDistance<3>(p), r * (1.0 - 1e-12));
 }
 
@@ -132,9 +137,11 @@ TEST(SeedingTest, PoissonDiskDeterministicPerSeed) {
     const auto b = seedPoissonDisk<2>(*disk, 0.05, 42);
     const auto c = seedPoissonDisk<2>(*disk, 0.05, 43);
     ASSERT_EQ(a.size(), b.size());
-    for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        EXPECT_EQ(a[i], b[i]);
     bool differ = a.size() != c.size();
-    for (std::size_t i = 0; !differ && i < a.size(); ++i) differ = a[i] != c[i];
+    for (std::size_t i = 0; !differ && i < a.size(); ++i)
+        differ = a[i] != c[i];
     EXPECT_TRUE(differ);
 }
 

@@ -39,7 +39,9 @@ template <int dim> std::string errorOf(const std::string& yaml) {
     return "";
 }
 
-Mat3 rotZ(double a) { return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix(); }
+Mat3 rotZ(double a) {
+    return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+}
 
 template <int dim> std::string stateOf(const RigidBody<dim>& b) {
     std::ostringstream os;
@@ -131,10 +133,12 @@ TEST(RigidBodyTest, PrescribedTable) {
                          "motion:\n  type: prescribed\n"
                          "  table: [[0, 0, 0, 0, 0, 0, 0], [1, 1, 0, -2, 0, 0, 1]]\n");
     const double dt = 0.01;
-    for (int i = 0; i < 100; ++i) b->advance(dt, i * dt, Vec3::Zero());
+    for (int i = 0; i < 100; ++i)
+        b->advance(dt, i * dt, Vec3::Zero());
     EXPECT_LT((b->position() - Vec3(0.5, 0, -1.0)).norm(), 1e-13);
     EXPECT_LT((b->rotation() - rotZ(0.5)).norm(), 1e-13);
-    for (int i = 100; i < 200; ++i) b->advance(dt, i * dt, Vec3::Zero());
+    for (int i = 100; i < 200; ++i)
+        b->advance(dt, i * dt, Vec3::Zero());
     EXPECT_LT((b->position() - Vec3(1.5, 0, -3.0)).norm(), 1e-13);
     EXPECT_LT((b->rotation() - rotZ(1.5)).norm(), 1e-13);
     EXPECT_LT((b->velocity() - Vec3(1, 0, -2)).norm(), 1e-15);
@@ -142,7 +146,8 @@ TEST(RigidBodyTest, PrescribedTable) {
     // 2D, with the first row after t = 0 (held constant before it).
     auto c = makeBody<2>("shape: {type: disk, radius: 1}\ndensity: 1\nposition: [0, 0]\n"
                          "motion: {type: prescribed, table: [[0.5, 2, 0, 1], [1.5, 0, 0, 3]]}\n");
-    for (int i = 0; i < 200; ++i) c->advance(dt, i * dt, Vec<2>(0, -9.81));
+    for (int i = 0; i < 200; ++i)
+        c->advance(dt, i * dt, Vec<2>(0, -9.81));
     // ∫ v: 0.5·2 + 2·½ + 0.5·0 = 2; ∫ ω: 0.5·1 + 2·1 + 0.5·3 = 4.
     EXPECT_NEAR(c->position().x(), 2.0, 1e-13);
     EXPECT_EQ(c->position().y(), 0.0);
@@ -212,7 +217,8 @@ TEST(RigidBodyTest, SpinAboutPrincipalAxis) {
     const double w = 2.0;
     const double dt = 0.005;
     const int n = 300;
-    for (int i = 0; i < n; ++i) b->advance(dt, i * dt, Vec3::Zero());
+    for (int i = 0; i < n; ++i)
+        b->advance(dt, i * dt, Vec3::Zero());
     EXPECT_EQ(b->angularVelocity(), Vec3(0, 0, 2));
     EXPECT_LT((b->rotation() - rotZ(4.0 * n * std::atan(0.25 * dt * w))).norm(), 1e-12);
     EXPECT_LT((b->rotation() - rotZ(w * n * dt)).norm(), 1e-5);
@@ -231,7 +237,8 @@ TEST(RigidBodyTest, SpinAboutPrincipalAxis) {
                              return std::string(s);
                          }());
     const Vec3 axis = d->rotation().col(0);
-    for (int i = 0; i < 500; ++i) d->advance(0.01, i * 0.01, Vec3::Zero());
+    for (int i = 0; i < 500; ++i)
+        d->advance(0.01, i * 0.01, Vec3::Zero());
     EXPECT_LT((d->angularVelocity() - 1.5 * axis).norm(), 1e-13);
     EXPECT_LT((d->rotation().col(0) - axis).norm(), 1e-13);
 }
@@ -245,7 +252,8 @@ TEST(RigidBodyTest, SpinAboutWorldZ) {
     const Mat3 r0 = b->rotation();
     const double dt = 1e-3;
     const int n = 1000;
-    for (int i = 0; i < n; ++i) b->advance(dt, i * dt, Vec3::Zero());
+    for (int i = 0; i < n; ++i)
+        b->advance(dt, i * dt, Vec3::Zero());
     EXPECT_LT((b->rotation() - rotZ(0.8) * r0).norm(), 1e-7);
     EXPECT_LT((b->rotation() - rotZ(4.0 * n * std::atan(0.25 * dt * 0.8)) * r0).norm(), 1e-12);
     EXPECT_LT((b->angularVelocity() - Vec3(0, 0, 0.8)).norm(), 1e-14);
@@ -329,7 +337,8 @@ TEST(RigidBodyTest, DiskRotation2D) {
 }
 
 TEST(RigidBodyTest, DensityOrMass) {
-    auto a = makeBody<3>("shape: {type: box, size: [1, 2, 3]}\ndensity: 500\nposition: [0, 0, 0]\n");
+    auto a =
+        makeBody<3>("shape: {type: box, size: [1, 2, 3]}\ndensity: 500\nposition: [0, 0, 0]\n");
     auto b = makeBody<3>("shape: {type: box, size: [1, 2, 3]}\nmass: 3000\nposition: [0, 0, 0]\n");
     EXPECT_EQ(a->mass(), 3000.0);
     EXPECT_EQ(b->mass(), 3000.0);
@@ -342,8 +351,8 @@ TEST(RigidBodyTest, DensityOrMass) {
                          "position: [0, 0, 0]\n")
                   .find("exactly one"),
               std::string::npos);
-    EXPECT_FALSE(errorOf<3>("shape: {type: box, size: [1, 2, 3]}\nmass: 0\nposition: [0, 0, 0]\n")
-                     .empty());
+    EXPECT_FALSE(
+        errorOf<3>("shape: {type: box, size: [1, 2, 3]}\nmass: 0\nposition: [0, 0, 0]\n").empty());
     EXPECT_FALSE(errorOf<3>("shape: {type: box, size: [1, 2, 3]}\nmass: 1\n").empty());
     EXPECT_NE(errorOf<3>("shape: {type: box, size: [1, 2, 3]}\nmass: 1\nposition: [0, 0, 0]\n"
                          "velocty: [1, 0, 0]\n")
@@ -379,7 +388,8 @@ TEST(RigidBodyTest, StateRoundTrip) {
 
     auto c = makeBody<2>("shape: {type: disk, radius: 1}\ndensity: 1\nposition: [0, 0]\n"
                          "angularVelocity: 0.3\nvelocity: [1, 1]\n");
-    for (int i = 0; i < 7; ++i) c->advance(0.1, 0.1 * i, Vec<2>(0, -9.81));
+    for (int i = 0; i < 7; ++i)
+        c->advance(0.1, 0.1 * i, Vec<2>(0, -9.81));
     auto d = makeBody<2>("shape: {type: disk, radius: 1}\ndensity: 1\nposition: [5, 5]\n");
     d->readState(Dictionary::fromString(stateOf(*c), "state"));
     EXPECT_EQ(stateOf(*c), stateOf(*d));
@@ -407,7 +417,8 @@ TEST_F(RigidBodyFileTest, StateFile) {
     bodies.push_back(makeBody<3>("shape: {type: box, size: [1, 1, 1]}\ndensity: 1\n"
                                  "position: [3, 0, 0]\nvelocity: [0, 1, 0]\n",
                                  "cube"));
-    for (auto& b : bodies) b->advance(0.1, 0.0, Vec3(0, 0, -9.81));
+    for (auto& b : bodies)
+        b->advance(0.1, 0.0, Vec3(0, 0, -9.81));
     const fs::path file = dir_ / "0.1" / "uniform" / "rigidBodies";
     writeRigidBodyState<3>(file, bodies);
 
@@ -419,7 +430,8 @@ TEST_F(RigidBodyFileTest, StateFile) {
                                    "position: [0, 0, 0]\n",
                                    "cube"));
     readRigidBodyState<3>(Dictionary::fromFile(file, "uniform/rigidBodies"), restored);
-    for (int i = 0; i < 2; ++i) EXPECT_EQ(stateOf(*bodies[i]), stateOf(*restored[i]));
+    for (int i = 0; i < 2; ++i)
+        EXPECT_EQ(stateOf(*bodies[i]), stateOf(*restored[i]));
 
     restored.push_back(makeBody<3>("shape: {type: sphere, radius: 1}\ndensity: 1\n"
                                    "position: [0, 0, 0]\n",

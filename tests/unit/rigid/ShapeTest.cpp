@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "rigid/BoxShape.hpp"
 #include "rigid/Shape.hpp"
+#include "rigid/BoxShape.hpp"
 #include "rigid/SphereShape.hpp"
 
 #include <gtest/gtest.h>
@@ -97,7 +97,8 @@ TEST(ShapeTest, Sphere) {
     std::vector<std::vector<int>> cells;
     s->surface(p, cells);
     EXPECT_EQ(cells.size(), 2u * 24u * 11u);
-    for (const Vec3& x : p) EXPECT_NEAR(x.norm(), 2.0, 1e-14);
+    for (const Vec3& x : p)
+        EXPECT_NEAR(x.norm(), 2.0, 1e-14);
     bool outward = false;
     const double v = enclosedVolume<3>(*s, outward);
     EXPECT_TRUE(outward);
@@ -123,7 +124,8 @@ TEST(ShapeTest, Disk) {
     std::vector<std::vector<int>> cells;
     s->surface(p, cells);
     EXPECT_EQ(cells.size(), 64u);
-    for (const Vec3& x : p) EXPECT_EQ(x.z(), 0.0);
+    for (const Vec3& x : p)
+        EXPECT_EQ(x.z(), 0.0);
 }
 
 TEST(ShapeTest, Box3D) {
@@ -132,8 +134,7 @@ TEST(ShapeTest, Box3D) {
     expectDistance<3>(*s, Vec3(1, 0, 0), 0.5, Vec3(1, 0, 0));
     expectDistance<3>(*s, Vec3(0.2, 0.3, -2.5), 1.0, Vec3(0, 0, -1));
     expectDistance<3>(*s, Vec3(1, 2, 0), std::sqrt(1.25), Vec3(0.5, 1, 0) / std::sqrt(1.25));
-    expectDistance<3>(*s, Vec3(-1, -2, 2), std::sqrt(1.5),
-                      Vec3(-0.5, -1, 0.5) / std::sqrt(1.5));
+    expectDistance<3>(*s, Vec3(-1, -2, 2), std::sqrt(1.5), Vec3(-0.5, -1, 0.5) / std::sqrt(1.5));
     // Inside: minus the distance to the nearest face, that face's normal.
     expectDistance<3>(*s, Vec3(0.4, 0, 0), -0.1, Vec3(1, 0, 0));
     expectDistance<3>(*s, Vec3(0, -0.9, 0.5), -0.1, Vec3(0, -1, 0));
@@ -185,12 +186,9 @@ TEST(ShapeTest, Box2D) {
 }
 
 TEST(ShapeTest, Errors) {
-    EXPECT_NE(errorOf<2>("type: sphere\nradius: 1\n").find("use 'disk' in 2D"),
-              std::string::npos);
-    EXPECT_NE(errorOf<3>("type: disk\nradius: 1\n").find("use 'sphere' in 3D"),
-              std::string::npos);
-    EXPECT_NE(errorOf<3>("type: sphere\nradius: 1\nradus: 2\n").find("radus"),
-              std::string::npos);
+    EXPECT_NE(errorOf<2>("type: sphere\nradius: 1\n").find("use 'disk' in 2D"), std::string::npos);
+    EXPECT_NE(errorOf<3>("type: disk\nradius: 1\n").find("use 'sphere' in 3D"), std::string::npos);
+    EXPECT_NE(errorOf<3>("type: sphere\nradius: 1\nradus: 2\n").find("radus"), std::string::npos);
     EXPECT_NE(errorOf<3>("type: box\nsize: [1, 1, 1]\ncentre: [0, 0, 0]\n").find("centre"),
               std::string::npos);
     EXPECT_NE(errorOf<3>("type: cone\nradius: 1\n").find("unknown type"), std::string::npos);

@@ -39,8 +39,7 @@ double inertiaFactor(const std::string& kernel) {
                                         : CubicBSplineKernel::InertiaFactor;
 }
 
-template <int dim>
-Dictionary gridDict() {
+template <int dim> Dictionary gridDict() {
     // A box away from the coordinate origin, so that angular momentum about it is not trivial.
     const std::string text =
         dim == 2 ? "bounds: {min: [-0.5, 0.25], max: [0.5, 1.25]}\ncellSize: 0.0625\n"
@@ -50,8 +49,7 @@ Dictionary gridDict() {
     return Dictionary::fromString(text, "constant/grid");
 }
 
-template <int dim>
-std::unique_ptr<Transfer<dim>> makeTransfer(const Scheme& s) {
+template <int dim> std::unique_ptr<Transfer<dim>> makeTransfer(const Scheme& s) {
     return Transfer<dim>::create(
         Dictionary::fromString("kernel: " + s.kernel + "\ntransfer: " + s.transfer + "\n",
                                "system/mpmSchemes"),
@@ -89,8 +87,7 @@ Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed, bool af
     return p;
 }
 
-template <int dim>
-void clearGrid(Grid<dim>& g) {
+template <int dim> void clearGrid(Grid<dim>& g) {
     std::fill(g.mass.begin(), g.mass.end(), 0.0);
     std::fill(g.momentum.begin(), g.momentum.end(), Vec<dim>::Zero());
     std::fill(g.force.begin(), g.force.end(), Vec<dim>::Zero());
@@ -107,16 +104,14 @@ void p2g(Transfer<dim>& t, const Particles<dim>& p, Grid<dim>& g, BlockSort<dim>
 }
 
 /// v = vOld = momentum / mass (zero where there is no mass).
-template <int dim>
-void gridVelocityFromMomentum(Grid<dim>& g) {
+template <int dim> void gridVelocityFromMomentum(Grid<dim>& g) {
     for (Index k = 0; k < g.numNodes(); ++k) {
         g.v[k] = g.mass[k] > 0 ? Vec<dim>(g.momentum[k] / g.mass[k]) : Vec<dim>::Zero();
         g.vOld[k] = g.v[k];
     }
 }
 
-template <int dim>
-Vec<dim> nodePos(const Grid<dim>& g, Index k) {
+template <int dim> Vec<dim> nodePos(const Grid<dim>& g, Index k) {
     IVec<dim> c;
     for (int d = 0; d < dim; ++d) {
         c[d] = static_cast<int>(k % g.nodes()[d]);
@@ -125,8 +120,7 @@ Vec<dim> nodePos(const Grid<dim>& g, Index k) {
     return g.nodePosition(c);
 }
 
-template <int dim>
-Vec3 to3(const Vec<dim>& a) {
+template <int dim> Vec3 to3(const Vec<dim>& a) {
     Vec3 r = Vec3::Zero();
     r.template head<dim>() = a;
     return r;
@@ -134,8 +128,7 @@ Vec3 to3(const Vec<dim>& a) {
 
 /// ε : Bᵀ, the angular momentum carried by the affine part B = C D of an APIC particle
 /// (Jiang et al. 2015): (ε:Bᵀ)_α = ε_αβγ B_γβ.
-template <int dim>
-Vec3 affineSpin(const Mat<dim>& B) {
+template <int dim> Vec3 affineSpin(const Mat<dim>& B) {
     Mat3 b = Mat3::Zero();
     b.template topLeftCorner<dim, dim>() = B;
     return Vec3(b(2, 1) - b(1, 2), b(0, 2) - b(2, 0), b(1, 0) - b(0, 1));
@@ -149,8 +142,7 @@ struct Totals {
 };
 
 /// Particle totals; with APIC (inertia > 0) the affine angular momentum m ε:(C D)ᵀ is added.
-template <int dim>
-Totals particleTotals(const Particles<dim>& p, double inertia, double h) {
+template <int dim> Totals particleTotals(const Particles<dim>& p, double inertia, double h) {
     Totals t;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double m = p.mass[i];
@@ -168,8 +160,7 @@ Totals particleTotals(const Particles<dim>& p, double inertia, double h) {
 }
 
 /// Grid totals from mass and momentum.
-template <int dim>
-Totals gridTotals(const Grid<dim>& g) {
+template <int dim> Totals gridTotals(const Grid<dim>& g) {
     Totals t;
     for (Index k = 0; k < g.numNodes(); ++k) {
         t.mass += g.mass[k];
@@ -180,8 +171,7 @@ Totals gridTotals(const Grid<dim>& g) {
 }
 
 /// Grid totals from mass and velocity: Σ m_i v_i, Σ x_i × m_i v_i.
-template <int dim>
-Totals gridVelocityTotals(const Grid<dim>& g) {
+template <int dim> Totals gridVelocityTotals(const Grid<dim>& g) {
     Totals t;
     for (Index k = 0; k < g.numNodes(); ++k) {
         t.mass += g.mass[k];
@@ -205,8 +195,7 @@ void expectSame(const Totals& a, const Totals& b, double scale, bool angular, co
 
 // ---------------------------------------------------------------------------------------------
 
-template <int dim>
-void checkScatterConservesMassAndMomentum(int n) {
+template <int dim> void checkScatterConservesMassAndMomentum(int n) {
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
         Grid<dim> g(gridDict<dim>());
@@ -235,8 +224,7 @@ TEST(Transfer, ScatterConservesMassAndMomentum3D) {
 
 /// P2G, grid velocity from momentum, G2P with dt = 0, P2G again: mass, linear momentum (all
 /// schemes) and angular momentum (APIC) are the same at every stage [Jiang et al. 2015].
-template <int dim>
-void checkRoundTrip(int n) {
+template <int dim> void checkRoundTrip(int n) {
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
         Grid<dim> g(gridDict<dim>());
@@ -273,8 +261,7 @@ TEST(Transfer, RoundTripConservesMomentum3D) {
 }
 
 /// Grid velocity set to the affine field a + A x on every node.
-template <int dim>
-void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, const Mat<dim>& A) {
+template <int dim> void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, const Mat<dim>& A) {
     for (Index k = 0; k < g.numNodes(); ++k) {
         g.v[k] = a + A * nodePos(g, k);
         g.vOld[k] = g.v[k];
@@ -282,8 +269,7 @@ void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, const Mat<dim>& A) {
     }
 }
 
-template <int dim>
-Mat<dim> rotationRate(double omega) {
+template <int dim> Mat<dim> rotationRate(double omega) {
     Mat<dim> W = Mat<dim>::Zero();
     if constexpr (dim == 2) {
         W(0, 1) = -omega;
@@ -296,8 +282,7 @@ Mat<dim> rotationRate(double omega) {
     return W;
 }
 
-template <int dim>
-void checkRigidRotationReproducedByApic() {
+template <int dim> void checkRigidRotationReproducedByApic() {
     for (const char* kernel : {"quadraticBSpline", "cubicBSpline"}) {
         SCOPED_TRACE(kernel);
         Grid<dim> g(gridDict<dim>());
@@ -324,8 +309,7 @@ TEST(Transfer, ApicReproducesRigidRotation3D) {
 }
 
 /// Every scheme interpolates an affine grid field exactly (PIC/APIC velocity, L everywhere).
-template <int dim>
-void checkAffineFieldInterpolation() {
+template <int dim> void checkAffineFieldInterpolation() {
     std::mt19937_64 rng(8);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Vec<dim> a;
@@ -364,8 +348,7 @@ TEST(Transfer, AffineFieldInterpolatedExactly3D) {
     checkAffineFieldInterpolation<3>();
 }
 
-template <int dim>
-void checkUniformVelocityPreserved() {
+template <int dim> void checkUniformVelocityPreserved() {
     Vec<dim> u0;
     for (int d = 0; d < dim; ++d)
         u0[d] = 0.3 - 0.7 * d;
@@ -435,8 +418,7 @@ TEST(Transfer, ApicNeedsBSplineKernel) {
 }
 
 /// Scatter (with stress) with 1 and with 2 threads: bit-identical grid arrays.
-template <int dim>
-void checkScatterDeterministic(int n) {
+template <int dim> void checkScatterDeterministic(int n) {
     const int threads = omp_get_max_threads();
     for (const Scheme& s : allSchemes()) {
         if (s.transfer == "flip") continue; // scatters exactly as pic
@@ -492,8 +474,7 @@ TEST(Transfer, ScatterForceMatchesCombinedScatter) {
 // Against a naive reference (tensor-product loops straight from the 1D kernels), which checks
 // the factored 3D loops and the 2D stencil visitor term by term.
 
-template <class Fn>
-void withKernel(const std::string& name, Fn&& fn) {
+template <class Fn> void withKernel(const std::string& name, Fn&& fn) {
     if (name == "linear") return fn(LinearKernel{});
     if (name == "gimp") {
         GimpKernel k;
@@ -536,8 +517,7 @@ void referenceStencil(const K& k, const Grid<dim>& g, const Vec<dim>& x, Fn&& fn
     }
 }
 
-template <class V>
-double maxNorm(const std::vector<V>& a) {
+template <class V> double maxNorm(const std::vector<V>& a) {
     double m = 0.0;
     for (const auto& x : a)
         m = std::max(m, std::sqrt(double(x.squaredNorm())));
@@ -551,8 +531,7 @@ double maxNorm(const std::vector<double>& a) {
     return m;
 }
 
-template <class V>
-double maxDiff(const std::vector<V>& a, const std::vector<V>& b) {
+template <class V> double maxDiff(const std::vector<V>& a, const std::vector<V>& b) {
     double m = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i)
         m = std::max(m, std::sqrt(double((a[i] - b[i]).squaredNorm())));
@@ -566,8 +545,7 @@ double maxDiff(const std::vector<double>& a, const std::vector<double>& b) {
     return m;
 }
 
-template <int dim>
-void checkAgainstReference(int n) {
+template <int dim> void checkAgainstReference(int n) {
     for (const Scheme& s : allSchemes()) {
         SCOPED_TRACE(s.kernel + " " + s.transfer);
         const bool apic = s.transfer == "apic";
