@@ -92,14 +92,14 @@ template <int dim> void Coupling<dim>::applyLocalForces(Particles<dim>& p, doubl
 
 template <int dim>
 Index Coupling<dim>::enforceGap(Particles<dim>& p,
-                                const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
+                                std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                                 const BlockSort<dim>& sort, const Grid<dim>& grid) const {
     Index moved = 0;
     minGap_ = 1e300;
     const double rpMax = maxRadius_;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
-        const RigidBody<dim>& body = *bodies[b];
+        RigidBody<dim>& body = *bodies[b];
         const CouplingLaw<dim>& law = *laws_[b];
         forParticlesNear(body.position(), body.shape().boundingRadius() + rpMax, sort, grid,
                          [&](Index i) {
@@ -109,9 +109,13 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                                  const double gap = law.minimumGap(radius(p.volume0[i]));
                                  if (phi < gap) {
                                      // Back to ξ_min along the normal; no approaching velocity.
+                                     // The momentum the point loses goes to the body.
                                      p.x[i] += (gap - phi) * n;
                                      const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(n);
-                                     if (vn < 0) p.v[i] -= vn * n;
+                                     if (vn < 0) {
+                                         p.v[i] -= vn * n;
+                                         body.applyImpulse(p.mass[i] * vn * n, p.x[i]);
+                                     }
                                      ++moved;
                                      Vec<dim> n2;
                                      minGap_ = std::min(minGap_, body.distance(p.x[i], n2));

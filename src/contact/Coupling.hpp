@@ -53,11 +53,10 @@ public:
 
     /// Project points closer than ξ_min to a non-penetrating body back out (after the bodies
     /// advanced). Returns the number of points moved.
-    Index enforceGap(Particles<dim>& p, const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
+    Index enforceGap(Particles<dim>& p, std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                      const BlockSort<dim>& sort, const Grid<dim>& grid) const;
 
-    /// Smallest gap ξ of any point to a coupled body after the last enforceGap (or +inf) [m],
-    /// and of the last computeForces [m].
+    /// Smallest gap ξ of any point to a coupled body after the last enforceGap (or +inf) [m].
     double minimumGapSeen() const { return minGap_; }
 
     /// The contact limit on Δt over all laws for the lightest point [000 Eq. 24].

@@ -17,8 +17,7 @@ public:
 protected:
     void initialise(const State<dim>& s, const Time&) override {
         if (s.bodies.empty())
-            throw InputError("system/controlDict", 0, this->name(),
-                             "contactGap needs rigid bodies (constant/rigidBodies)");
+            this->dict().error("type", "contactGap needs rigid bodies (constant/rigidBodies)");
     }
     void sample(const State<dim>& s, const Time&) override {
         smallest_ = std::min(smallest_, s.minimumGap);

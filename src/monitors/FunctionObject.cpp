@@ -9,16 +9,14 @@ namespace mpm {
 
 template <int dim>
 FunctionObject<dim>::FunctionObject(const Dictionary& dict, std::string name)
-    : name_(std::move(name)) {
+    : dict_(dict), name_(std::move(name)) {
     const std::string wc = dict.getWordOr("writeControl", "timeStep", {"timeStep", "runTime"});
     byTime_ = wc == "runTime";
     interval_ = byTime_ ? dict.getScalarOr("writeInterval", 0.0, Bounds::nonNegative())
                         : dict.getIntOr("writeInterval", 1, Bounds::closed(1, 2e9));
 }
 
-template <int dim>
-void FunctionObject<dim>::open(const Case& cs, const Time& time, const State<dim>& s) {
-    initialise(s, time);
+template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& time) {
     const auto dir = cs.path("postProcessing") / name_ / timeName(time.value(), 6);
     std::filesystem::create_directories(dir);
     out_.open(dir / (name_ + ".dat"));

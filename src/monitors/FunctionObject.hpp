@@ -25,8 +25,11 @@ public:
 
     const std::string& name() const { return name_; }
 
+    /// Check the entries against the simulation (named bodies exist, …) and record initial
+    /// values; called for every function object before any of them writes, and in -dry-run.
+    void prepare(const State<dim>& s, const Time& time) { initialise(s, time); }
     /// Open the output file (a restarted run opens a new <startTime> folder).
-    void open(const Case& cs, const Time& time, const State<dim>& s);
+    void open(const Case& cs, const Time& time);
     /// Sample every step (sample()) and write a row if the schedule says so.
     void execute(const State<dim>& s, const Time& time);
     /// Execute now (the initial state).
@@ -36,6 +39,8 @@ public:
     static std::vector<std::unique_ptr<FunctionObject>> createAll(const Dictionary& controlDict);
 
 protected:
+    /// This function object's entry in controlDict (for errors located at file:line).
+    const Dictionary& dict() const { return dict_; }
     /// Called every step before a possible write (for time averages); default: nothing.
     virtual void sample(const State<dim>&, const Time&) {}
     /// Called once when the output opens (e.g. to record the initial state).
@@ -46,6 +51,7 @@ protected:
     virtual std::vector<double> values(const State<dim>& s) const = 0;
 
 private:
+    Dictionary dict_;
     std::string name_;
     bool byTime_ = false;
     double interval_ = 1;

@@ -26,11 +26,11 @@ protected:
         for (std::size_t b = 0; b < s.bodies.size(); ++b)
             if (s.bodies[b]->name() == bodyName_) body_ = static_cast<int>(b);
         if (body_ < 0)
-            throw InputError("system/controlDict", 0, this->name() + ".body",
-                             "no rigid body named '" + bodyName_ + "' in constant/rigidBodies");
+            this->dict().error("body",
+                               "no rigid body named '" + bodyName_ + "' in constant/rigidBodies");
         if (s.gravity.norm() == 0)
-            throw InputError("system/controlDict", 0, this->name(),
-                             "intrusionDepth measures along gravity: constant/g is needed");
+            this->dict().error("type",
+                               "intrusionDepth measures along gravity: constant/g is needed");
         up_ = -s.gravity.normalized();
         s.bodies[body_]->shape().surface(points_, cells_);
         if (!surfaceGiven_) {

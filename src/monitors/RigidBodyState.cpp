@@ -17,11 +17,10 @@ protected:
         for (const auto& b : s.bodies)
             found |= b->name() == only_;
         if (!found)
-            throw InputError("system/controlDict", 0, this->name() + ".body",
-                             "no rigid body named '" + only_ + "' in constant/rigidBodies");
+            this->dict().error("body",
+                               "no rigid body named '" + only_ + "' in constant/rigidBodies");
         if (s.bodies.empty())
-            throw InputError("system/controlDict", 0, this->name(),
-                             "rigidBodyState needs rigid bodies (constant/rigidBodies)");
+            this->dict().error("type", "rigidBodyState needs rigid bodies (constant/rigidBodies)");
     }
     std::vector<std::string> columns(const State<dim>& s) const override {
         std::vector<std::string> c;

@@ -248,6 +248,18 @@ template <int dim> void RigidBody<dim>::addForceAndTorque(const Vec<dim>& f, con
     }
 }
 
+template <int dim> void RigidBody<dim>::applyImpulse(const Vec<dim>& J, const Vec<dim>& at) {
+    if (motion_ != Motion::Free) return;
+    v_ += J / mass_;
+    const Vec<dim> r = at - x_;
+    if constexpr (dim == 3) {
+        const Vec3 dL = R_.transpose() * r.cross(J); // angular impulse in body axes
+        omegaBody_ += dL.cwiseQuotient(inertia_);
+    } else {
+        omegaBody_[2] += (r[0] * J[1] - r[1] * J[0]) / inertia_[2];
+    }
+}
+
 template <int dim> void RigidBody<dim>::advance(double dt, double t, const Vec<dim>& gravity) {
     if (motion_ == Motion::Fixed) {
         v_.setZero();

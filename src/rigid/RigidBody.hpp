@@ -71,6 +71,10 @@ public:
     void addForce(const Vec<dim>& f, const Vec<dim>& at);
     /// Add a force and torque (world frame) directly.
     void addForceAndTorque(const Vec<dim>& f, const Vec3& torque);
+    /// Apply an impulse J [N s] at world point x now: v += J/m, ω += I⁻¹ (r × J) (free bodies
+    /// only; fixed and prescribed bodies are unaffected). Used to return the momentum a
+    /// point loses when it is projected out of the body.
+    void applyImpulse(const Vec<dim>& J, const Vec<dim>& at);
     const Vec<dim>& force() const { return f_; }
     const Vec3& torque() const { return torque_; }
 

@@ -214,10 +214,12 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
     (void)s;
 
+    for (auto& f : functions_)
+        f->prepare(state(), time); // every check before anything is written
     snapshot();
     if (options_.dryRun) return;
     for (auto& f : functions_)
-        f->open(case_, time, state());
+        f->open(case_, time);
     if (fresh) {
         write();
         for (auto& f : functions_)
@@ -572,16 +574,15 @@ template <int dim> void MpmSimulation<dim>::couple(double dt) {
 
 template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
     ScopedTimer timer(times_.bodies);
-    for (auto& b : bodies_) {
+    for (auto& b : bodies_)
         b->advance(dt, time_->value() - dt, gravity_);
-        maxSpeed_ = std::max(maxSpeed_, b->velocity().norm()); // bodies count for the CFL too
-    }
-    if (coupling_) {
-        coupling_->enforceGap(particles_, bodies_, sort_, grid_);
-        for (const auto& b : bodies_)
-            if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
-                throw RunError("step " + std::to_string(time_->index()) + ": rigid body '" +
-                               b->name() + "' has a non-finite state");
+    if (coupling_) coupling_->enforceGap(particles_, bodies_, sort_, grid_);
+    for (const auto& b : bodies_) {
+        if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
+            fail("rigid bodies", -1, "rigid body '" + b->name() + "' has a non-finite state");
+        // Bodies count for the CFL too, at their rim speed |v| + |ω| r.
+        maxSpeed_ = std::max(maxSpeed_, b->velocity().norm() + b->angularVelocity().norm() *
+                                                                   b->shape().boundingRadius());
     }
 }
 
@@ -939,9 +940,11 @@ template <int dim> void MpmSimulation<dim>::snapshot() {
 template <int dim>
 void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const std::string& what) {
     std::ostringstream os;
-    os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase
-       << ": particle " << particles_.id[particle] << " at (" << particles_.x[particle].transpose()
-       << ") " << what << '.';
+    os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": ";
+    if (particle >= 0)
+        os << "particle " << particles_.id[particle] << " at ("
+           << particles_.x[particle].transpose() << ") ";
+    os << what << '.';
     if (hasGood_ && !options_.dryRun) {
         particles_ = good_;
         for (std::size_t b = 0; b < bodies_.size(); ++b)
