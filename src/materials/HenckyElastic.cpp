@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/HenckyElastic.hpp"
+#include "core/Parallel.hpp"
 
 #include "core/FastMath.hpp"
 #include "core/SymmetricEigen.hpp"
@@ -64,7 +65,7 @@ Index HenckyElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Inde
     const Index batches = (n + Lanes - 1) / Lanes;
     const double lambda = c_.lambda, twoG = 2.0 * c_.G;
     Index bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for if (worthThreads(8 * batches)) schedule(static) reduction(min : bad)
     for (Index b = 0; b < batches; ++b) {
         Mat3 be[Lanes], Q[Lanes];
         Vec3 lam[Lanes];

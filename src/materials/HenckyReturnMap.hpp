@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/FastMath.hpp"
+#include "core/Parallel.hpp"
 #include "core/SymmetricEigen.hpp"
 #include "materials/HenckyElastic.hpp"
 #include "materials/Material.hpp"
@@ -143,7 +144,7 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
     const double lambda = c.lambda, twoG = 2.0 * c.G, K = c.K;
     const double sqrt2 = std::sqrt(2.0), sqrt2G = sqrt2 * c.G;
     Index bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for if (worthThreads(8 * batches)) schedule(static) reduction(min : bad)
     for (Index b = 0; b < batches; ++b) {
         Mat3 be[Lanes], Q[Lanes];
         Vec3 lam[Lanes];

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/LinearElastic.hpp"
+#include "core/Parallel.hpp"
 
 #include <cmath>
 
@@ -24,7 +25,7 @@ Index LinearElastic<dim>::updateStress(Particles<dim>& p, const std::vector<Inde
                                        double dt) const {
     const Index n = static_cast<Index>(ids.size());
     Index bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : bad)
     for (Index k = 0; k < n; ++k) {
         const Index i = ids[k];
         const Mat3 L = embed3<dim>(p.L[i]);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/BlockSort.hpp"
+#include "core/Parallel.hpp"
 
 #include <atomic>
 
@@ -12,7 +13,7 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
     Index firstOutside = n;
     const Vec<dim> origin = grid.origin();
     const double invH = grid.invH();
-#pragma omp parallel for schedule(static) reduction(min : firstOutside)
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : firstOutside)
     for (Index i = 0; i < n; ++i) {
         const Vec<dim> xh = (p.x[i] - origin) * invH;
         if (!grid.insideArrays(xh)) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/Parallel.hpp"
 #include "core/Types.hpp"
 
 #include <vector>
@@ -44,7 +45,7 @@ template <int dim> struct Particles {
     void permute(const std::vector<Index>& order) {
         forEachArray([&order](auto& a) {
             std::remove_reference_t<decltype(a)> b(order.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(static_cast <Index>(order.size()))) schedule(static)
             for (Index k = 0; k < static_cast<Index>(order.size()); ++k)
                 b[k] = a[order[k]];
             a.swap(b);

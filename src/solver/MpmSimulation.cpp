@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "solver/MpmSimulation.hpp"
+#include "core/Parallel.hpp"
 
 #include "core/Log.hpp"
 #include "core/SymmetricEigen.hpp"
@@ -603,7 +604,7 @@ template <int dim> void MpmSimulation<dim>::removeOutflow() {
         return ((particles_.x[i] - lo).minCoeff() < 0) || ((hi - particles_.x[i]).minCoeff() < 0);
     };
     Index anyOut = 0;
-#pragma omp parallel for schedule(static) reduction(+ : anyOut)
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : anyOut)
     for (Index i = 0; i < n; ++i)
         anyOut += outside(i);
     if (anyOut == 0) return;
@@ -641,7 +642,7 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         }
     };
     const Index nOld = static_cast<Index>(activeBlocks_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(64 * nOld)) schedule(static)
     for (Index k = 0; k < nOld; ++k)
         forNodes(activeBlocks_[k], [&](Index i) {
             grid_.mass[i] = 0;
@@ -715,7 +716,7 @@ template <int dim> void MpmSimulation<dim>::gridVelocity() {
     (void)n;
     const auto& blocks = activeBlocks_;
     const IVec<dim> nodes = grid_.nodes();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(64 * static_cast <Index>(blocks.size()))) schedule(static)
     for (Index k = 0; k < static_cast<Index>(blocks.size()); ++k) {
         const IVec<dim> c = grid_.blockCoord(blocks[k]);
         IVec<dim> lo, hi;
@@ -749,7 +750,7 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
     const Vec<dim> g = gravity_;
     const double alpha = damping_;
     const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(64 * static_cast <Index>(blocks.size()))) schedule(static)
     for (Index k = 0; k < static_cast<Index>(blocks.size()); ++k) {
         const IVec<dim> c = grid_.blockCoord(blocks[k]);
         IVec<dim> lo, hi;
@@ -814,7 +815,7 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
     // Kinematics: F ← (1 + Δt L) F, V = det(F) V⁰ [002 Eq. 76].
     const Index n = static_cast<Index>(particles_.size());
     Index inverted = n;
-#pragma omp parallel for schedule(static) reduction(min : inverted)
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)
     for (Index i = 0; i < n; ++i) {
         particles_.F[i] = (Mat<dim>::Identity() + dt * particles_.L[i]) * particles_.F[i];
         const double J = particles_.F[i].determinant();

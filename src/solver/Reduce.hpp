@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/Parallel.hpp"
 #include "core/Types.hpp"
 
 #include <vector>
@@ -13,7 +14,7 @@ template <class Fn> double deterministicSum(Index n, Fn&& f) {
     constexpr Index chunk = 4096;
     const Index nChunks = (n + chunk - 1) / chunk;
     std::vector<double> partial(nChunks, 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
     for (Index c = 0; c < nChunks; ++c) {
         double s = 0.0;
         const Index end = std::min(n, (c + 1) * chunk);

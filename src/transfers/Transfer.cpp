@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transfers/Transfer.hpp"
+#include "core/Parallel.hpp"
 
 #include "kernels/Kernels.hpp"
 
@@ -32,7 +33,7 @@ public:
         st_.resize(n);
         const Vec<dim> origin = g.origin();
         const double invH = g.invH();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index i = 0; i < n; ++i) {
             Stencil& s = st_[i];
             const Vec<dim> xh = (p.x[i] - origin) * invH;
@@ -69,7 +70,7 @@ public:
     void velocityGradient(Particles<dim>& p, const Grid<dim>& g) override {
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index i = 0; i < n; ++i) {
             const Stencil& s = st_[i];
             Mat<dim> L = Mat<dim>::Zero();
@@ -209,7 +210,7 @@ private:
         for (int colour = 0; colour < BlockSort<dim>::NumColours; ++colour) {
             const auto& blocks = sort.blocksOfColour(colour);
             const Index nb = static_cast<Index>(blocks.size());
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for if (worthThreads(static_cast <Index>(p.size()))) schedule(dynamic, 1)
             for (Index bi = 0; bi < nb; ++bi) {
                 const Index b = blocks[bi];
                 for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
@@ -250,7 +251,7 @@ private:
         const double eta = ratio_;
         double vmax2 = 0.0, ke = 0.0;
         Index bad = n;
-#pragma omp parallel for schedule(static) reduction(max : vmax2) reduction(+ : ke) \
+#pragma omp parallel for if(worthThreads(n)) schedule(static) reduction(max : vmax2) reduction(+ : ke) \
     reduction(min : bad)
         for (Index i = 0; i < n; ++i) {
             const Stencil& s = st_[i];
