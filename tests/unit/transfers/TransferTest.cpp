@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Conservation, reproduction and determinism of the particle ↔ grid transfers.
+#include "core/Parallel.hpp"
 #include "transfers/Transfer.hpp"
 
 #include "kernels/Kernels.hpp"
@@ -440,11 +441,11 @@ template <int dim> void checkScatterDeterministic(int n) {
 }
 
 TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads2D) {
-    checkScatterDeterministic<2>(2000);
+    checkScatterDeterministic<2>(3 * ParallelThreshold); // above the threshold: really threaded
 }
 
 TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads3D) {
-    checkScatterDeterministic<3>(800);
+    checkScatterDeterministic<3>(2 * ParallelThreshold);
 }
 
 TEST(Transfer, ScatterForceMatchesCombinedScatter) {
