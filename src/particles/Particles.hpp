@@ -40,6 +40,26 @@ template <int dim> struct Particles {
         f(mass), f(volume0), f(volume), f(plasticStrain), f(slip), f(id), f(material);
     }
 
+    /// Apply `f(a, b)` to every pair of corresponding arrays of this and `other`.
+    template <class Fn> void forEachArrayPair(Particles& o, Fn&& f) {
+        f(x, o.x), f(v, o.v), f(C, o.C), f(L, o.L), f(F, o.F), f(be, o.be), f(stress, o.stress);
+        f(mass, o.mass), f(volume0, o.volume0), f(volume, o.volume);
+        f(plasticStrain, o.plasticStrain), f(slip, o.slip), f(id, o.id), f(material, o.material);
+    }
+
+    /// permute() through `scratch`, whose arrays keep their memory between calls (the periodic
+    /// reorder then touches no fresh pages).
+    void permute(const std::vector<Index>& order, Particles& scratch) {
+        const Index n = static_cast<Index>(order.size());
+        forEachArrayPair(scratch, [&order, n](auto& a, auto& b) {
+            b.resize(order.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+            for (Index k = 0; k < n; ++k)
+                b[k] = a[order[k]];
+            a.swap(b);
+        });
+    }
+
     /// Reorder all arrays so that new particle k is old particle order[k] (order may be shorter
     /// than size(): the particles left out are removed).
     void permute(const std::vector<Index>& order) {

@@ -558,7 +558,7 @@ template <int dim> void MpmSimulation<dim>::sortParticles() {
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
     // steps) store the particles in block order, for locality in P2G and G2P.
     if ((preloading_ ? preloadIndex_ : time_->index()) % ReorderInterval == 0) {
-        particles_.permute(sort_.order());
+        particles_.permute(sort_.order(), scratch_);
         sort_.update(particles_, grid_);
         buildMaterialLists();
     }

@@ -89,6 +89,7 @@ private:
     Grid<dim> grid_;
     Vec<dim> gravity_ = Vec<dim>::Zero();
     Particles<dim> particles_;
+    Particles<dim> scratch_; ///< reorder buffers, kept between reorders
     std::vector<std::unique_ptr<Material<dim>>> materials_;
     std::vector<std::string> materialNames_;
     std::vector<std::vector<Index>> materialParticles_;

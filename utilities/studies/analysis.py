@@ -17,9 +17,10 @@ def series(results):
     return out
 
 
-def value_at(a, col, t):
-    """Column col of series a linearly interpolated at time t (None beyond its end)."""
-    if len(a) == 0 or a[-1, 0] < t - 1e-9:
+def value_at(a, col, t, tol=1e-9):
+    """Column col of series a linearly interpolated at time t (None if it ends more than tol
+    before t; within tol the last value is taken)."""
+    if len(a) == 0 or a[-1, 0] < t - tol:
         return None
     return float(np.interp(t, a[:, 0], a[:, col]))
 

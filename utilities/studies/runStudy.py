@@ -198,7 +198,10 @@ def collect(case, rc, wall):
     res["endTime"] = ctrl.get("endTime")
     cell, depth, gap = load_dat(case, "loadCell"), load_dat(case, "depth"), load_dat(case, "gap")
     res["lastTime"] = float(depth[-1, 0]) if len(depth) else 0.0
-    res["reachedEnd"] = rc == 0 and res["lastTime"] >= float(ctrl["endTime"]) - 1e-9
+    res["deltaT"] = float(ctrl["deltaT"])
+    # a fixed step ends the run within half a step of endTime (docs/caseFormat.md §2)
+    res["reachedEnd"] = rc == 0 and \
+        res["lastTime"] >= float(ctrl["endTime"]) - 0.5 * res["deltaT"] - 1e-12
     if len(cell):
         i = int(np.nanargmax(cell[:, 2]))
         res["peakLoadAverage"] = float(cell[i, 2])
