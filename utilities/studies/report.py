@@ -135,7 +135,7 @@ def report_resolution(results, ser, path):
         ax[2].axvline(e["h3"]["wall"], color="k", lw=0.8, ls=":", label="h = 3 mm (reference)")
     ax[0].set_ylabel("load (2 ms avg) [N]")
     ax[1].set_ylabel("intrusion depth / D")
-    ax[2].set_ylabel(f"error vs h = 3 mm FLIP [%]")
+    ax[2].set_ylabel("error vs h = 3 mm FLIP [%]")
     ax[2].set_xlabel(f"wall time for {A.T_COMPARE} s simulated [s] (2 threads)")
     ax[2].set_xscale("log")
     for a in ax[:2]:

@@ -1,10 +1,11 @@
 """The parameter studies of the granular-impact issue on glassDrop40 [000 §4.2, §5].
 
 Base case: tutorials/granularImpact/glassDrop40Coarse (glass sphere D = 38.34 mm, 40 cm drop,
-h = 5 mm, 57 600 points, GIMP + FLIP 0.995, Drucker-Prager phi = 30 deg with trans-phase,
+h = 5 mm, 59 114 points, GIMP + FLIP 0.995, Drucker-Prager phi = 30 deg with trans-phase,
 barrier coupling, deltaT = 2e-5 s). Every study ends at T_END = 0.08 s unless noted
 (resolution: h = 3 mm and APIC at h = 4 mm to 0.06 s, compared at 0.06 s; Young's modulus:
-0.04 s; coupling: 0.015 s; time step: 0.02 s). The points are written every 5 ms (splash). Identical variants of different studies run once (runStudy.py links them).
+0.04 s; coupling: 0.015 s; time step: 0.02 s). The points are written every 5 ms (splash).
+Identical variants of different studies run once (runStudy.py links them).
 
 check(study, results) returns [(label, state, detail)], state one of
   "ok"             the trend (or property) holds,
