@@ -581,6 +581,18 @@ template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
     for (const auto& b : bodies_) {
         if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
             fail("rigid bodies", -1, "rigid body '" + b->name() + "' has a non-finite state");
+        // Bodies do not collide with the grid walls: one that has passed through a wall is
+        // an error (one leaving through an open face simply flies on).
+        const double r = b->shape().boundingRadius();
+        for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
+            const int a = f / 2;
+            const bool beyond = f % 2 == 0 ? b->position()[a] < grid_.lo()[a] - r
+                                           : b->position()[a] > grid_.hi()[a] + r;
+            if (beyond && grid_.faces()[f].kind != FaceCondition::Kind::Open)
+                fail("rigid bodies", -1,
+                     "rigid body '" + b->name() + "' has passed through the grid face " +
+                         Grid<dim>::faceName(f) + " (bodies do not collide with the walls)");
+        }
         // Bodies count for the CFL too, at their rim speed |v| + |ω| r.
         maxSpeed_ = std::max(maxSpeed_, b->velocity().norm() + b->angularVelocity().norm() *
                                                                    b->shape().boundingRadius());
