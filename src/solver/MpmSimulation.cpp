@@ -250,16 +250,7 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     for (; k < preload_.maxSteps; ++k) {
         const double dt = time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_);
         preloadIndex_ = k;
-        sortParticles();
-        particleToGrid();
-        if (usf_) {
-            gridVelocity();
-            updateStress(dt);
-            scatterInternalForce();
-        }
-        gridUpdate(dt);
-        gridToParticle(dt);
-        if (!usf_) updateStress(dt);
+        step(dt); // the material only: bodies wait while preloading_
         kinetic = lastKinetic_;
         peak = std::max(peak, kinetic);
         if (k >= 50 && kinetic <= preload_.tolerance * peak) break;
@@ -275,6 +266,8 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     damping_ = savedDamping;
     preloading_ = false;
     times_ = PhaseTimes{};
+    steps_ = 0;
+    stepWall_ = 0;
     log() << "Gravity preload: " << k << " steps, kinetic energy " << kinetic << " J ("
           << kinetic / std::max(peak, 1e-300) << " of its peak), " << wallTime() - t0 << " s\n";
 }
@@ -533,8 +526,9 @@ template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
 
 template <int dim> void MpmSimulation<dim>::step(double dt) {
     const double t0 = wallTime();
+    const bool withBodies = !bodies_.empty() && !preloading_;
     sortParticles();
-    if (coupling_) couple(dt);
+    if (withBodies) couple(dt);
     particleToGrid();
     if (usf_) {
         gridVelocity();
@@ -544,7 +538,7 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
     gridUpdate(dt);
     gridToParticle(dt);
     if (!usf_) updateStress(dt);
-    if (!bodies_.empty()) advanceBodies(dt);
+    if (withBodies) advanceBodies(dt);
     stepWall_ += wallTime() - t0;
     ++steps_;
     if (steps_ % 20 == 0) snapshot();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Conservation, reproduction and determinism of the particle ↔ grid transfers.
-#include "core/Parallel.hpp"
 #include "transfers/Transfer.hpp"
+#include "core/Parallel.hpp"
 
 #include "kernels/Kernels.hpp"
 
