@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/ParticleFile.hpp"
 
+#include "io/XmlFile.hpp"
+
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -27,75 +29,6 @@ namespace mpm::io {
 namespace {
 
 static_assert(sizeof(vtkTypeInt64) == sizeof(std::int64_t), "vtkTypeInt64 must be 64 bits");
-
-/// Collects the ErrorEvents of a VTK object (an observed object does not print them).
-class ErrorObserver : public vtkCommand {
-public:
-    static ErrorObserver* New() { return new ErrorObserver; }
-
-    void Execute(vtkObject* caller, unsigned long event, void* callData) override {
-        if (event != vtkCommand::ErrorEvent) {
-            return;
-        }
-        failed_ = true;
-        // The executive only repeats that the algorithm failed: keep its text as a last resort.
-        const bool fromExecutive = caller != nullptr && caller->IsA("vtkExecutive") != 0;
-        if (callData == nullptr || (fromExecutive && !message_.empty())) {
-            return;
-        }
-        // "ERROR: In <source>, line <n>\n<Class> (<address>): <text>\n\n" -> "<text>"
-        std::string text = static_cast<const char*>(callData);
-        const std::size_t lineEnd = text.find('\n');
-        const std::size_t start = text.find("): ", lineEnd == std::string::npos ? 0 : lineEnd);
-        if (start != std::string::npos) {
-            text.erase(0, start + 3);
-        }
-        while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
-            text.pop_back();
-        }
-        if (fromExecutive) {
-            message_ = text;
-            fromExecutive_ = true;
-            return;
-        }
-        if (fromExecutive_) {
-            message_.clear();
-            fromExecutive_ = false;
-        }
-        if (!message_.empty()) {
-            message_ += "; ";
-        }
-        message_ += text;
-    }
-
-    bool failed() const { return failed_; }
-    const std::string& message() const { return message_; }
-
-private:
-    ErrorObserver() = default;
-    bool failed_ = false;
-    bool fromExecutive_ = false; ///< message_ holds only the executive's text
-    std::string message_;
-};
-
-std::filesystem::path tmpName(const std::filesystem::path& file) {
-    std::filesystem::path tmp = file;
-    tmp += ".tmp";
-    return tmp;
-}
-
-void removeQuietly(const std::filesystem::path& file) {
-    std::error_code ec;
-    std::filesystem::remove(file, ec);
-}
-
-[[noreturn]] void cannotWrite(const std::filesystem::path& file, const std::string& why = {}) {
-    std::string msg = "cannot write " + file.string();
-    if (!why.empty()) {
-        msg += ": " + why;
-    }
-    throw std::runtime_error(msg);
-}
 
 [[noreturn]] void cannotRead(const std::filesystem::path& file, const std::string& why) {
     throw std::runtime_error("cannot read " + file.string() + ": " + why);
@@ -225,31 +158,8 @@ void writeVtu(const std::filesystem::path& file, const PointCloud& cloud) {
         pointData->AddArray(array);
     }
 
-    const std::filesystem::path tmp = tmpName(file);
-    vtkNew<ErrorObserver> errors;
     vtkNew<vtkXMLUnstructuredGridWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    writer->SetCompressionLevel(1);
-    writer->SetHeaderTypeToUInt64();
-    writer->SetFileName(tmp.string().c_str());
-    writer->SetInputData(grid);
-
-    const int ok = writer->Write();
-    std::error_code ec;
-    if (ok != 1 || errors->failed() || writer->GetErrorCode() != 0 ||
-        !std::filesystem::is_regular_file(tmp, ec)) {
-        removeQuietly(tmp);
-        cannotWrite(file, errors->message());
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        removeQuietly(tmp);
-        cannotWrite(file, ec.message());
-    }
+    writeXmlAtomically(*writer, grid, file);
 }
 
 PointCloud readVtu(const std::filesystem::path& file) {

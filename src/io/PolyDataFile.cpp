@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/PolyDataFile.hpp"
 
+#include "io/XmlFile.hpp"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
@@ -21,38 +23,6 @@
 namespace mpm::io {
 
 namespace {
-
-/// Records whether a VTK object raised an ErrorEvent (an observed object does not print it).
-class ErrorFlag : public vtkCommand {
-public:
-    static ErrorFlag* New() { return new ErrorFlag; }
-    void Execute(vtkObject*, unsigned long event, void* callData) override {
-        if (event != vtkCommand::ErrorEvent) return;
-        failed_ = true;
-        if (callData != nullptr && message_.empty()) {
-            message_ = static_cast<const char*>(callData);
-            while (!message_.empty() && (message_.back() == '\n' || message_.back() == ' ')) {
-                message_.pop_back();
-            }
-        }
-    }
-    bool failed() const { return failed_; }
-    const std::string& message() const { return message_; }
-
-private:
-    ErrorFlag() = default;
-    bool failed_ = false;
-    std::string message_;
-};
-
-[[noreturn]] void cannotWrite(const std::filesystem::path& file, const std::string& why) {
-    throw std::runtime_error("cannot write " + file.string() + (why.empty() ? "" : ": " + why));
-}
-
-void removeQuietly(const std::filesystem::path& file) {
-    std::error_code ec;
-    std::filesystem::remove(file, ec);
-}
 
 vtkSmartPointer<vtkDoubleArray> makeArray(const std::filesystem::path& file, const DataArray& a,
                                           std::size_t tuples) {
@@ -117,32 +87,8 @@ void writeVtp(const std::filesystem::path& file, const std::vector<Vec3>& points
         poly->GetCellData()->AddArray(makeArray(file, a, cells.size()));
     }
 
-    std::filesystem::path tmp = file;
-    tmp += ".tmp";
-    vtkNew<ErrorFlag> errors;
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToZLib();
-    writer->SetCompressionLevel(1);
-    writer->SetHeaderTypeToUInt64();
-    writer->SetFileName(tmp.string().c_str());
-    writer->SetInputData(poly);
-
-    const int ok = writer->Write();
-    std::error_code ec;
-    if (ok != 1 || errors->failed() || writer->GetErrorCode() != 0 ||
-        !std::filesystem::is_regular_file(tmp, ec)) {
-        removeQuietly(tmp);
-        cannotWrite(file, errors->message());
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        removeQuietly(tmp);
-        cannotWrite(file, ec.message());
-    }
+    writeXmlAtomically(*writer, poly, file);
 }
 
 } // namespace mpm::io

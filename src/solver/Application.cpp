@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "solver/Application.hpp"
 
+#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 
@@ -73,9 +74,9 @@ int Application::run(const std::function<void()>& body) const {
     char date[64];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
     log() << "/*---------------------------------------------------------------------------*\\\n"
-          << "  mpmFoam " << MPMFOAM_VERSION << ": material point method for granular media\n"
+          << "  mpmFoam " << buildVersion << ": material point method for granular media\n"
           << "\\*---------------------------------------------------------------------------*/\n"
-          << "Build   : " << MPMFOAM_BUILD << '\n'
+          << "Build   : " << buildRevision << '\n'
           << "Exec    : " << commandLine_ << '\n'
           << "Date    : " << date << '\n'
           << "Host    : " << host << '\n'
