@@ -245,7 +245,14 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     damping_ = preload_.damping;
     preloading_ = true;
     maxSpeed_ = 0;
-    double peak = 0, kinetic = 0;
+    // E_k also vanishes at the turning points of an oscillation: require it to stay below the
+    // tolerance for a whole period of the slowest vertical mode, 4 L/c with L the grid's
+    // extent along g (an upper bound of the material's height).
+    double extent = 0;
+    for (int d = 0; d < dim; ++d)
+        extent += std::fabs(gravity_[d]) / gravity_.norm() * (grid_.hi()[d] - grid_.lo()[d]);
+    const double window = 4.0 * extent / maxWaveSpeed_;
+    double peak = 0, kinetic = 0, quiet = 0;
     long k = 0;
     for (; k < preload_.maxSteps; ++k) {
         const double dt = time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_);
@@ -253,7 +260,8 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
         step(dt); // the material only: bodies wait while preloading_
         kinetic = lastKinetic_;
         peak = std::max(peak, kinetic);
-        if (k >= 50 && kinetic <= preload_.tolerance * peak) break;
+        quiet = kinetic <= preload_.tolerance * peak ? quiet + dt : 0.0;
+        if (quiet >= window) break;
     }
     if (k == preload_.maxSteps)
         warning() << "gravity preload: kinetic energy still " << kinetic / std::max(peak, 1e-300)
