@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# surfaceToLevelSet end to end: a 0.1 m cube written as an ascii STL becomes
+# constant/levelSets/cube.vti; VTK's reader loads it, phi equals the exact signed distance
+# inside and outside, and the field data carries the cube's volume. A misspelt key is an
+# error with file, line and key, exit code 1.
+set -euo pipefail
+root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
+py=${MPMFOAM_PYTHON:-/usr/bin/python3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+c=$work/case
+mkdir -p "$c/system" "$c/constant/geometry"
+"$py" - "$c/constant/geometry/cube.stl" <<'PY'
+import sys, itertools
+a = 0.05
+quads = []
+for axis in range(3):
+    for s in (-1, 1):
+        o = [(axis + 1) % 3, (axis + 2) % 3]
+        pts = []
+        for u, v in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+            p = [0.0] * 3
+            p[axis] = s * a; p[o[0]] = u * a; p[o[1]] = v * a
+            pts.append(p)
+        if s < 0: pts.reverse()
+        quads.append(pts)
+with open(sys.argv[1], "w") as f:
+    f.write("solid cube\n")
+    for q in quads:
+        for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+            f.write(" facet normal 0 0 0\n  outer loop\n")
+            for p in t: f.write("   vertex %g %g %g\n" % tuple(p))
+            f.write("  endloop\n endfacet\n")
+    f.write("endsolid cube\n")
+PY
+cat >"$c/system/surfaceToLevelSetDict" <<'YAML'
+surfaces:
+  cube: {file: cube.stl, spacing: 0.005, padding: 0.02}
+YAML
+"$root/bin/surfaceToLevelSet" -case "$c" >"$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+"$py" - "$c/constant/levelSets/cube.vti" <<'PY'
+import sys, numpy as np, vtk
+from vtk.util.numpy_support import vtk_to_numpy as arr
+r = vtk.vtkXMLImageDataReader(); r.SetFileName(sys.argv[1]); r.Update(); o = r.GetOutput()
+phi = arr(o.GetPointData().GetArray("phi")).astype(float)
+n = o.GetNumberOfPoints()
+centre = o.FindPoint(0.0, 0.0, 0.0)
+corner = o.FindPoint(*o.GetPoint(0))
+def box(x):  # exact signed distance to the cube of half-edge 0.05
+    q = np.abs(np.array(x)) - 0.05
+    return np.linalg.norm(np.maximum(q, 0.0)) + min(q.max(), 0.0)
+exact, inside = box(o.GetPoint(corner)), box(o.GetPoint(centre))
+vol = o.GetFieldData().GetArray("volume").GetValue(0)
+ok = abs(phi[centre] - inside) < 1e-6 and abs(phi[corner] - exact) < 1e-6 and abs(vol - 1e-3) < 1e-9
+print(f"surfaceToLevelSet: {n} points, phi(centre) {phi[centre]:.6f} (exact {inside:.6f}), phi(corner) "
+      f"{phi[corner]:.6f} (exact {exact:.6f}), volume {vol:.3e}: {'PASS' if ok else 'FAIL'}")
+sys.exit(0 if ok else 1)
+PY
+sed -i 's/spacing:/spacng:/' "$c/system/surfaceToLevelSetDict"
+rc=0
+"$root/bin/surfaceToLevelSet" -case "$c" >"$work/log" 2>"$work/err" || rc=$?
+grep -q "system/surfaceToLevelSetDict:2" "$work/err" && grep -q "spacng" "$work/err" && [ "$rc" -eq 1 ] ||
+    { echo "FAIL: misspelt key not reported (exit $rc)"; cat "$work/err"; exit 1; }
+echo "surfaceToLevelSet: misspelt key reported with file, line and key"
