@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "case/Dictionary.hpp"
+#include "TestSupport.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,15 +15,7 @@ namespace mpm {
 namespace {
 
 /// Run `f`, expect an InputError and return it for inspection.
-InputError catchInputError(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return InputError("", -1, "", "no error");
-}
+using test::catchInputError;
 
 /// Expect `f` to throw an InputError at `line` naming `key`, with `text` in its message.
 void expectError(const std::function<void()>& f, int line, const std::string& key,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Grid layout, face node lists, input errors, and the block colouring of P2G.
 #include "grid/Grid.hpp"
+#include "TestSupport.hpp"
 #include "particles/BlockSort.hpp"
 
 #include <gtest/gtest.h>
@@ -19,15 +20,7 @@ Dictionary parse(const std::string& text) {
     return Dictionary::fromString(text, "constant/grid");
 }
 
-InputError catchInputError(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return InputError("", -1, "", "no error");
-}
+using test::catchInputError;
 
 /// Integer coordinates of node k (x fastest).
 template <int dim> IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Elastic constants, Hencky hyperelasticity, Jaumann linear elasticity and material selection.
 #include "materials/HenckyElastic.hpp"
+#include "TestSupport.hpp"
 #include "materials/LinearElastic.hpp"
 #include "materials/Material.hpp"
 
@@ -25,15 +26,7 @@ Dictionary parse(const std::string& text) {
     return Dictionary::fromString(text, "constant/materials");
 }
 
-InputError catchInputError(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return InputError("", -1, "", "no error");
-}
+using test::catchInputError;
 
 Mat3 randomMatrix(std::mt19937_64& rng, double scale) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);

@@ -2,6 +2,7 @@
 // μ(I) rheology on Hencky elasticity: rate-dependent return, Drucker–Prager limit, apex,
 // trans-phase gasification, input checks.
 #include "materials/MuI.hpp"
+#include "TestSupport.hpp"
 #include "materials/DruckerPrager.hpp"
 #include "materials/HenckyElastic.hpp"
 #include "materials/Material.hpp"
@@ -26,15 +27,7 @@ Dictionary parse(const std::string& text) {
     return Dictionary::fromString(text, "constant/materials");
 }
 
-InputError catchInputError(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "expected an InputError";
-    return InputError("", -1, "", "no error");
-}
+using test::catchInputError;
 
 const std::string elastic = "density: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: 30\n";
 
