@@ -9,12 +9,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <random>
 #include <stdexcept>
 
 #include <unistd.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace {
 
@@ -109,6 +115,98 @@ TEST(SignedDistance, gridMatchesPointwiseEvaluation) {
             }
         }
     }
+}
+
+/// A non-convex, star-shaped body: icosphere vertices at radius 1 + 0.25 sin(3x) cos(2y).
+TriangleMesh bumpySphere() {
+    TriangleMesh mesh = icosphere(1.0, 3);
+    for (Vec3& v : mesh.vertices)
+        v *= 1.0 + 0.25 * std::sin(3.0 * v.x()) * std::cos(2.0 * v.y());
+    return mesh;
+}
+
+/// Exact signed distance: BVH distance and exact winding number at every node.
+std::vector<double> bruteForce(const SignedDistance& sdf, const RegularGrid& grid) {
+    std::vector<double> v(grid.numPoints());
+    for (int k = 0; k < grid.dims[2]; ++k)
+        for (int j = 0; j < grid.dims[1]; ++j)
+            for (int i = 0; i < grid.dims[0]; ++i) {
+                const Vec3 x = grid.point(i, j, k);
+                const double d = sdf.unsignedDistance(x);
+                v[grid.index(i, j, k)] = std::abs(sdf.windingNumberExact(x)) > 0.5 ? -d : d;
+            }
+    return v;
+}
+
+TEST(SignedDistance, fastGridMatchesBruteForce) {
+    const TriangleMesh mesh = bumpySphere();
+    const SignedDistance sdf(mesh);
+    RegularGrid grid;
+    grid.origin = Vec3(-1.45, -1.4, -1.35);
+    grid.spacing = 0.05;
+    grid.dims = {58, 57, 55};
+    sdf.evaluate(grid);
+    const std::vector<double> ref = bruteForce(sdf, grid);
+    const double band = SignedDistance::bandWidth * grid.spacing;
+    double maxBand = 0.0, maxFar = 0.0;
+    std::size_t nBand = 0, nFar = 0, nInexact = 0;
+    for (std::size_t n = 0; n < ref.size(); ++n) {
+        const double err = std::abs(grid.values[n] - ref[n]);
+        ASSERT_EQ(grid.values[n] < 0.0, ref[n] < 0.0) << n; // sign everywhere
+        // Outside the band the propagated distance is an upper bound.
+        EXPECT_GE(std::abs(grid.values[n]), std::abs(ref[n])) << n;
+        if (std::abs(ref[n]) <= band) {
+            maxBand = std::max(maxBand, err);
+            ++nBand;
+        } else {
+            maxFar = std::max(maxFar, err / std::abs(ref[n]));
+            ++nFar;
+            nInexact += err > 0.0 ? 1 : 0;
+        }
+    }
+    EXPECT_GT(nBand, 10000U);
+    EXPECT_GT(nFar, 10000U);
+    EXPECT_LE(maxBand, 1e-12);
+    EXPECT_LE(maxFar, 1e-2); // relative, outside the band
+    std::cout << "band nodes " << nBand << " max error " << maxBand << "; far nodes " << nFar
+              << " inexact " << nInexact << " max relative error " << maxFar << '\n';
+}
+
+TEST(SignedDistance, fastGridIsIndependentOfThreads) {
+#ifdef _OPENMP
+    const SignedDistance sdf(bumpySphere());
+    RegularGrid g1, g2;
+    g1.origin = g2.origin = Vec3(-1.5, -1.4, -1.3);
+    g1.spacing = g2.spacing = 0.04;
+    g1.dims = g2.dims = {75, 70, 66};
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    sdf.evaluate(g1);
+    omp_set_num_threads(2);
+    sdf.evaluate(g2);
+    omp_set_num_threads(threads);
+    ASSERT_EQ(g1.values.size(), g2.values.size());
+    EXPECT_EQ(std::memcmp(g1.values.data(), g2.values.data(), g1.values.size() * sizeof(double)),
+              0);
+#else
+    GTEST_SKIP() << "built without OpenMP";
+#endif
+}
+
+TEST(SignedDistance, fastGridFarFromTheSurface) {
+    // The grid does not meet the band of any triangle: exact distance everywhere.
+    const Vec3 h(0.5, 0.3, 0.2);
+    const SignedDistance sdf(box(h));
+    RegularGrid grid;
+    grid.origin = Vec3(2.0, -1.0, 0.5);
+    grid.spacing = 0.1;
+    grid.dims = {10, 12, 9};
+    sdf.evaluate(grid);
+    for (int k = 0; k < grid.dims[2]; ++k)
+        for (int j = 0; j < grid.dims[1]; ++j)
+            for (int i = 0; i < grid.dims[0]; ++i)
+                EXPECT_NEAR(grid.values[grid.index(i, j, k)], boxSdf(grid.point(i, j, k), h),
+                            1e-12);
 }
 
 TEST(MassProperties, rotatedBox) {
