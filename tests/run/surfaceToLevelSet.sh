@@ -10,29 +10,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 c=$work/case
 mkdir -p "$c/system" "$c/constant/geometry"
-"$py" - "$c/constant/geometry/cube.stl" <<'PY'
-import sys, itertools
-a = 0.05
-quads = []
-for axis in range(3):
-    for s in (-1, 1):
-        o = [(axis + 1) % 3, (axis + 2) % 3]
-        pts = []
-        for u, v in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
-            p = [0.0] * 3
-            p[axis] = s * a; p[o[0]] = u * a; p[o[1]] = v * a
-            pts.append(p)
-        if s < 0: pts.reverse()
-        quads.append(pts)
-with open(sys.argv[1], "w") as f:
-    f.write("solid cube\n")
-    for q in quads:
-        for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
-            f.write(" facet normal 0 0 0\n  outer loop\n")
-            for p in t: f.write("   vertex %g %g %g\n" % tuple(p))
-            f.write("  endloop\n endfacet\n")
-    f.write("endsolid cube\n")
-PY
+"$py" "$root/tests/tools/cubeStl.py" "$c/constant/geometry/cube.stl" 0.05
 cat >"$c/system/surfaceToLevelSetDict" <<'YAML'
 surfaces:
   cube: {file: cube.stl, spacing: 0.005, padding: 0.02}
