@@ -28,7 +28,9 @@ Dictionary Case::read(const std::string& relative) const {
     if (!fs::exists(p) && fs::exists(root_ / (relative + ".yaml")))
         p = root_ / (relative + ".yaml");
     if (!fs::is_regular_file(p)) throw InputError(relative, 0, "", "required file is missing");
-    return Dictionary::fromFile(p, relative);
+    Dictionary d = Dictionary::fromFile(p, relative);
+    d.setBaseDirectory(root_); // relative file entries (level sets, meshes) are case-relative
+    return d;
 }
 
 std::vector<std::pair<double, std::string>> Case::timeDirectories() const {

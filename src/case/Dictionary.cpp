@@ -314,7 +314,14 @@ std::string Dictionary::getWordOr(const std::string& key, const std::string& def
 Dictionary Dictionary::subDict(const std::string& key) const {
     const YAML::Node v = required(*this, node_, *read_, key);
     if (!v.IsMap()) error(key, "expected a map of 'key: value' entries, got " + describe(v));
-    return Dictionary(v, file_, path_.empty() ? key : path_ + "." + key);
+    Dictionary d(v, file_, path_.empty() ? key : path_ + "." + key);
+    d.base_ = base_;
+    return d;
+}
+
+std::filesystem::path Dictionary::getPath(const std::string& key) const {
+    const std::filesystem::path p(getString(key));
+    return p.is_relative() && !base_.empty() ? base_ / p : p;
 }
 
 bool Dictionary::isDict(const std::string& key) const {
@@ -335,6 +342,7 @@ std::vector<Dictionary> Dictionary::dictList(const std::string& key) const {
                              "expected a map of 'key: value' entries, got " + describe(v[i]));
         }
         out.push_back(Dictionary(v[i], file_, itemPath));
+        out.back().base_ = base_;
     }
     return out;
 }

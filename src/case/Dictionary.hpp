@@ -87,6 +87,12 @@ public:
     int line(const std::string& key) const;
 
     const std::string& fileName() const { return file_; }
+
+    /// A path entry: relative values are taken from the base directory (the case directory
+    /// for dictionaries read through Case; the working directory otherwise).
+    std::filesystem::path getPath(const std::string& key) const;
+    /// Set the directory relative paths are resolved against (inherited by sub-dictionaries).
+    void setBaseDirectory(const std::filesystem::path& dir) { base_ = dir; }
     /// Dotted path of this map inside its file ("" for the top level).
     const std::string& path() const { return path_; }
 
@@ -96,6 +102,7 @@ private:
     std::string file_;
     std::string path_;
     std::shared_ptr<std::set<std::string>> read_;
+    std::filesystem::path base_;
 };
 
 /// Levenshtein distance, for "did you mean" suggestions.

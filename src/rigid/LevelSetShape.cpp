@@ -70,17 +70,12 @@ public:
 
 LevelSetShape::LevelSetShape(const Dictionary& dict) {
     const std::string name = dict.getString("file");
-    // Relative paths: against the current working directory (the case directory when the
-    // solver runs in it); the dictionary does not know the case root.
-    const std::filesystem::path path(name);
+    // Relative paths are taken from the case directory (Dictionary::getPath).
+    const std::filesystem::path path = dict.getPath("file");
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        const std::filesystem::path tried =
-            path.is_absolute() ? path : std::filesystem::current_path(ec) / path;
-        dict.error("file", "level-set file '" + name + "' not found (tried " + tried.string() +
-                               "; relative paths are taken from the current working directory, "
-                               "so run in the case directory or give an absolute path)");
-    }
+    if (!std::filesystem::is_regular_file(path, ec))
+        dict.error("file", "level-set file '" + name + "' not found (tried " + path.string() +
+                               "; run surfaceToLevelSet -case <case> first)");
     dict.checkUnknownKeys();
     try {
         ls_ = levelset::readVti(path);

@@ -51,7 +51,8 @@ cube:
   coupling: {type: barrier, friction: 0.3}
 YAML
 (cd "$c" && "$root/bin/surfaceToLevelSet" -case . >log.surfaceToLevelSet 2>&1) || { cat "$c/log.surfaceToLevelSet"; exit 1; }
-(cd "$c" && "$root/bin/mpmFoam" -case . >log.mpmFoam 2>&1) || { tail -20 "$c/log.mpmFoam"; exit 1; }
+# From outside the case: the level-set file is found relative to the case directory.
+(cd "$work" && "$root/bin/mpmFoam" -case "$c" >"$c/log.mpmFoam" 2>&1) || { tail -20 "$c/log.mpmFoam"; exit 1; }
 "$py" - "$c" <<'PY'
 import sys, numpy as np, vtk
 case = sys.argv[1]
