@@ -7,6 +7,7 @@
 #include "io/ParticleFile.hpp"
 #include "particles/Region.hpp"
 #include "particles/Seeding.hpp"
+#include "rigid/LevelSetShape.hpp"
 #include "rigid/RigidBodyOutput.hpp"
 #include "solver/Reduce.hpp"
 
@@ -139,6 +140,16 @@ template <int dim> void MpmSimulation<dim>::readRigidBodies() {
                                   : Dictionary::fromString("{type: barrier}", bd.fileName());
         laws.push_back(CouplingLaw<dim>::create(cd, grid_.h()));
         bodies_.push_back(std::make_unique<RigidBody<dim>>(bd, name));
+        if constexpr (dim == 3) {
+            // A level set coarser than the MPM grid goes unstable near twice the larger
+            // spacing [004 §5.2]: warn.
+            const auto* ls = dynamic_cast<const LevelSetShape*>(&bodies_.back()->shape());
+            if (ls && ls->levelSet().grid.spacing > grid_.h() * (1 + 1e-9))
+                warning() << "constant/rigidBodies: body '" << name << "': its level-set spacing "
+                          << ls->levelSet().grid.spacing << " m is coarser than the MPM cell size "
+                          << grid_.h() << " m; the coupling can go unstable [004 §5.2] — "
+                          << "rebuild it with a smaller spacing in surfaceToLevelSetDict\n";
+        }
         const double r = bodies_.back()->shape().boundingRadius();
         for (int d = 0; d < dim; ++d) {
             const double x = bodies_.back()->position()[d];

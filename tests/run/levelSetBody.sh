@@ -3,7 +3,7 @@
 # into constant/levelSets/cube.vti, and mpmFoam drops that body (type levelSet) onto a small
 # Drucker-Prager bed: the run ends normally, no point ever ends a step inside the cube
 # (contactGap > 0), the sand stops the cube (it ends slower than free fall would make it),
-# and rigidBodies.vtp holds its surface.
+# and rigidBodies.vtp holds its surface. A level set coarser than the grid is warned about.
 set -euo pipefail
 root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
 py=${MPMFOAM_PYTHON:-/usr/bin/python3}
@@ -67,3 +67,12 @@ print(f"levelSetBody: smallest gap {gap[:, 2].min():.3e} m, final vz {vz:.3f} m/
       f"(free fall {freeFall:.3f}), {tris} surface triangles: {'PASS' if ok else 'FAIL'}")
 sys.exit(0 if ok else 1)
 PY
+
+# A level set coarser than the MPM grid gets a warning [004 §5.2].
+sed -i 's/spacing: 0.004/spacing: 0.012/' "$c/system/surfaceToLevelSetDict"
+rm -rf "$c"/0* "$c"/postProcessing "$c"/*.pvd
+"$root/bin/surfaceToLevelSet" -case "$c" >"$c/log.surfaceToLevelSet.coarse" 2>&1
+"$root/bin/mpmFoam" -case "$c" -dry-run >"$c/log.dryRun" 2>&1
+grep -q "coarser than the MPM cell size" "$c/log.dryRun" ||
+    { echo "FAIL: no warning for a level set coarser than the grid"; exit 1; }
+echo "levelSetBody: a level set coarser than the MPM grid is warned about"
