@@ -28,29 +28,13 @@ Dictionary parse(const std::string& text) {
 }
 
 using test::catchInputError;
+using test::invariants;
+using test::randomRotation;
 
 const std::string sand = "type: druckerPrager\ndensity: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: 30\n";
 
 template <int dim> std::unique_ptr<Material<dim>> create(const std::string& extra = "") {
     return Material<dim>::create(parse(sand + extra), "sand");
-}
-
-/// Mean pressure p = −tr σ/3 and q = √½ |σ − (tr σ/3) 1| [000 Eq. 6].
-void invariants(const Mat3& s, double& p, double& q) {
-    p = -s.trace() / 3.0;
-    q = std::sqrt(0.5) * (s + p * Mat3::Identity()).norm();
-}
-
-/// A random rotation (eigenvectors of a random symmetric matrix).
-Mat3 randomRotation(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Mat3 a;
-    for (int i = 0; i < 9; ++i)
-        a(i) = u(rng);
-    Vec3 lam;
-    Mat3 Q;
-    symmetricEigen3(a + a.transpose(), lam, Q);
-    return Q;
 }
 
 /// bᵉ = R exp(2ε) Rᵀ for principal Hencky strains ε with volumetric part ev and a deviatoric part

@@ -28,6 +28,8 @@ Dictionary parse(const std::string& text) {
 }
 
 using test::catchInputError;
+using test::invariants;
+using test::randomRotation;
 
 const std::string elastic = "density: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: 30\n";
 
@@ -45,22 +47,6 @@ template <int dim> std::unique_ptr<Material<dim>> createMuITinyGrains() {
                                        "frictionAngle2: 40\ngrainDiameter: 1e-300\n"
                                        "grainDensity: 2650\n"),
                                  "sand");
-}
-
-void invariants(const Mat3& s, double& p, double& q) {
-    p = -s.trace() / 3.0;
-    q = std::sqrt(0.5) * (s + p * Mat3::Identity()).norm();
-}
-
-Mat3 randomRotation(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Mat3 a;
-    for (int i = 0; i < 9; ++i)
-        a(i) = u(rng);
-    Vec3 lam;
-    Mat3 Q;
-    symmetricEigen3(a + a.transpose(), lam, Q);
-    return Q;
 }
 
 /// bᵉ = R exp(2ε) Rᵀ with tr ε = ev and |ε̂| = dev in random axes.
