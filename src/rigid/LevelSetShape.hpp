@@ -13,10 +13,8 @@ namespace mpm {
 /// InputError). Key: `file`, a `.vti` written by surfaceToLevelSet (docs/levelSets.md), read
 /// once. The grid is in the body frame (origin at the centroid, principal axes).
 ///
-/// Path resolution: a relative `file` is resolved against the current working directory (the
-/// solvers run in the case directory). The dictionary does not know the case root, so a case
-/// run from elsewhere must give an absolute path; a file that is not found is an InputError at
-/// `file` naming the path tried.
+/// Path resolution: a relative `file` is taken from the case directory (Dictionary::getPath); a
+/// file that is not found is an InputError at `file` naming the path tried.
 ///
 /// φ and n [004 Eq. 11–13]: φ(x) = Σ_i w_i(x) φ_i and ∇φ = Σ_i ∇w_i(x) φ_i with the quadratic
 /// B-spline kernel (src/kernels/Kernels.hpp) on the level-set grid, n = ∇φ/|∇φ|. Near the grid
@@ -29,8 +27,7 @@ namespace mpm {
 /// expression: (x − p)/|x − p| along the axes where x is outside, ∂φ/∂x at p along the others.
 ///
 /// Mass properties from the file: volume and unit-density principal moments. The file's
-/// centroid and rotation (mesh frame → body frame) are not used by the shape; they are exposed
-/// for a body's initial pose.
+/// centroid and rotation (body frame → mesh frame) give the body's default pose (meshPose()).
 ///
 /// Surface (for output): marching tetrahedra over the grid cells (each cube split into six
 /// tetrahedra along its main diagonal, so neighbours share faces), vertices on grid edges by
@@ -46,6 +43,12 @@ public:
     Vec3 unitInertia() const override { return ls_.principalMoments; }
     double boundingRadius() const override { return boundingRadius_; }
     void surface(std::vector<Vec3>& points, std::vector<std::vector<int>>& cells) const override;
+    /// The file's centroid and rotation: x_mesh = centroid + rotation · x_body.
+    bool meshPose(Vec3& centroid, Mat3& rotation) const override {
+        centroid = ls_.centroid;
+        rotation = ls_.rotation;
+        return true;
+    }
 
     const levelset::LevelSet& levelSet() const { return ls_; }
     /// Lower and upper corners of the grid box.

@@ -79,55 +79,27 @@ template <int dim>
 RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std::move(name)) {
     shape_ = Shape<dim>::create(dict.subDict("shape"));
 
-    // Motion: a word (free | fixed) or a map {type: free | fixed | prescribed, …}.
-    const std::vector<std::string> motions{"free", "fixed", "prescribed"};
+    // Motion: a word (free | fixed) or a map {type: free | fixed | prescribed | driven, …}.
+    const std::vector<std::string> motions{"free", "fixed", "prescribed", "driven"};
     std::string motionName = "free";
     if (dict.isDict("motion")) {
         const Dictionary m = dict.subDict("motion");
         motionName = m.getWord("type", motions);
-        if (motionName == "prescribed") {
-            const int columns = 1 + dim + nOmega<dim>();
-            if (m.has("table")) {
-                for (const char* key : {"velocity", "angularVelocity"}) {
-                    if (m.has(key)) {
-                        m.error(key, "give either a table or velocity/angularVelocity, not both");
-                    }
-                }
-                table_ = m.vectorList("table", columns);
-                if (table_.empty()) m.error("table", "the table needs at least one row");
-                for (std::size_t i = 1; i < table_.size(); ++i) {
-                    if (!(table_[i][0] > table_[i - 1][0])) {
-                        m.error("table", "rows must be sorted by strictly increasing time; row " +
-                                             std::to_string(i) + " (t = " + fmt(table_[i][0]) +
-                                             ") is not after row " + std::to_string(i - 1));
-                    }
-                }
-            } else {
-                std::vector<double> row{0.0};
-                const std::vector<double> v =
-                    m.getVectorOr("velocity", std::vector<double>(dim, 0.0), dim);
-                row.insert(row.end(), v.begin(), v.end());
-                if constexpr (dim == 3) {
-                    const std::vector<double> w =
-                        m.getVectorOr("angularVelocity", {0.0, 0.0, 0.0}, 3);
-                    row.insert(row.end(), w.begin(), w.end());
-                } else {
-                    row.push_back(m.getScalarOr("angularVelocity", 0.0));
-                }
-                table_.push_back(row);
-            }
+        if (motionName == "prescribed" || motionName == "driven") {
+            readMotionTable(m, motionName == "prescribed");
         }
         m.checkUnknownKeys();
     } else {
         motionName = dict.getWordOr("motion", "free", motions);
-        if (motionName == "prescribed") {
-            dict.error("motion", "prescribed motion is a map: {type: prescribed, velocity: …, "
-                                 "angularVelocity: …} or {type: prescribed, table: [[t, v…, "
-                                 "ω…], …]}");
+        if (motionName == "prescribed" || motionName == "driven") {
+            dict.error("motion", motionName + " motion is a map: {type: prescribed, velocity: "
+                                              "…, angularVelocity: …}, {type: driven, "
+                                              "angularVelocity: …} or either with a table");
         }
     }
     motion_ = motionName == "fixed"        ? Motion::Fixed
               : motionName == "prescribed" ? Motion::Prescribed
+              : motionName == "driven"     ? Motion::Driven
                                            : Motion::Free;
 
     // Mass properties: density ρ or mass m, exactly one. I = ρ · unitInertia.
@@ -148,8 +120,13 @@ RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std:
     }
     inertia_ = density * shape_->unitInertia();
 
-    // Pose.
-    x_ = readVec<dim>(dict, "position");
+    // Pose. A shape from a mesh (levelSet) defaults to the mesh's own pose: centroid c and
+    // rotation R_mesh (body → mesh); a given orientation R_user turns it about the centroid,
+    // R = R_user R_mesh, and a given position moves the centroid.
+    Vec<dim> meshCentroid = Vec<dim>::Zero();
+    Mat<dim> meshRotation = Mat<dim>::Identity();
+    const bool fromMesh = shape_->meshPose(meshCentroid, meshRotation);
+    x_ = fromMesh && !dict.has("position") ? meshCentroid : readVec<dim>(dict, "position");
     if constexpr (dim == 3) {
         if (dict.isDict("orientation")) {
             const Dictionary o = dict.subDict("orientation");
@@ -166,13 +143,23 @@ RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std:
             }
         }
         q_.normalize();
+        if (fromMesh) q_ = (q_ * Eigen::Quaterniond(meshRotation)).normalized();
     } else {
         theta_ = dict.getScalarOr("orientation", 0.0) * pi / 180.0;
     }
     updateRotation();
 
     // Twist: v^{-½} and ω^{-½} (world frame in the file, body axes inside).
-    if (motion_ == Motion::Free) {
+    if (motion_ == Motion::Driven) {
+        v_ = dict.has("velocity") ? readVec<dim>(dict, "velocity") : Vec<dim>::Zero();
+        if (dict.has("angularVelocity")) {
+            dict.error("angularVelocity", "not used with motion driven; give it in the motion");
+        }
+        Vec<dim> unused;
+        Vec3 omega;
+        interpolate<dim>(table_, 0.0, unused, omega);
+        setAngularVelocity(omega);
+    } else if (motion_ == Motion::Free) {
         v_ = dict.has("velocity") ? readVec<dim>(dict, "velocity") : Vec<dim>::Zero();
         Vec3 omega = Vec3::Zero();
         if constexpr (dim == 3) {
@@ -197,6 +184,52 @@ RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std:
         }
     }
     dict.checkUnknownKeys();
+}
+
+template <int dim> void RigidBody<dim>::readMotionTable(const Dictionary& m, bool withVelocity) {
+    // Rows are stored as (t, v…, ω…); a driven motion gives (t, ω…) and v is stored as 0.
+    const int nVelocity = withVelocity ? dim : 0;
+    const int columns = 1 + nVelocity + nOmega<dim>();
+    const auto store = [&](const std::vector<double>& row) {
+        std::vector<double> full(row.begin(), row.begin() + 1 + nVelocity);
+        full.resize(1 + dim, 0.0);
+        full.insert(full.end(), row.begin() + 1 + nVelocity, row.end());
+        table_.push_back(full);
+    };
+    if (m.has("table")) {
+        for (const char* key : {"velocity", "angularVelocity"}) {
+            if (m.has(key)) {
+                m.error(key, "give either a table or velocity/angularVelocity, not both");
+            }
+        }
+        const std::vector<std::vector<double>> rows = m.vectorList("table", columns);
+        if (rows.empty()) m.error("table", "the table needs at least one row");
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            if (!(rows[i][0] > rows[i - 1][0])) {
+                m.error("table", "rows must be sorted by strictly increasing time; row " +
+                                     std::to_string(i) + " (t = " + fmt(rows[i][0]) +
+                                     ") is not after row " + std::to_string(i - 1));
+            }
+        }
+        for (const auto& row : rows)
+            store(row);
+        return;
+    }
+    std::vector<double> row{0.0};
+    if (withVelocity) {
+        const std::vector<double> v = m.getVectorOr("velocity", std::vector<double>(dim, 0.0), dim);
+        row.insert(row.end(), v.begin(), v.end());
+    }
+    if constexpr (dim == 3) {
+        const std::vector<double> w = withVelocity
+                                          ? m.getVectorOr("angularVelocity", {0.0, 0.0, 0.0}, 3)
+                                          : m.getVector("angularVelocity", 3);
+        row.insert(row.end(), w.begin(), w.end());
+    } else {
+        row.push_back(withVelocity ? m.getScalarOr("angularVelocity", 0.0)
+                                   : m.getScalar("angularVelocity"));
+    }
+    store(row);
 }
 
 template <int dim> void RigidBody<dim>::setAngularVelocity(const Vec3& omegaWorld) {
@@ -249,8 +282,9 @@ template <int dim> void RigidBody<dim>::addForceAndTorque(const Vec<dim>& f, con
 }
 
 template <int dim> void RigidBody<dim>::applyImpulse(const Vec<dim>& J, const Vec<dim>& at) {
-    if (motion_ != Motion::Free) return;
+    if (motion_ == Motion::Fixed || motion_ == Motion::Prescribed) return;
     v_ += J / mass_;
+    if (motion_ == Motion::Driven) return; // its rotation is prescribed
     const Vec<dim> r = at - x_;
     if constexpr (dim == 3) {
         const Vec3 dL = R_.transpose() * r.cross(J); // angular impulse in body axes
@@ -268,11 +302,14 @@ template <int dim> void RigidBody<dim>::advance(double dt, double t, const Vec<d
         return;
     }
 
-    if (motion_ == Motion::Prescribed) {
-        // v^{n+½}, ω^{n+½} from the table at t + Δt/2; x^{n+1} = x^n + Δt v^{n+½}; the
+    if (motion_ == Motion::Prescribed || motion_ == Motion::Driven) {
+        // v^{n+½}, ω^{n+½} from the table at t + Δt/2 (driven: v^{n+½} by central difference
+        // from gravity and the coupling force [004 Eq. 19]); x^{n+1} = x^n + Δt v^{n+½}; the
         // rotation by the exact exponential of the (world) ω^{n+½} Δt.
         Vec3 omega;
-        interpolate<dim>(table_, t + 0.5 * dt, v_, omega);
+        Vec<dim> v;
+        interpolate<dim>(table_, t + 0.5 * dt, v, omega);
+        v_ = motion_ == Motion::Driven ? Vec<dim>(v_ + dt * (f_ / mass_ + gravity)) : v;
         x_ += dt * v_;
         if constexpr (dim == 3) {
             const double angle = omega.norm() * dt;

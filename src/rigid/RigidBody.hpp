@@ -15,9 +15,10 @@ namespace mpm {
 
 /// How a body moves (constant/rigidBodies `motion:`).
 enum class Motion {
-    Free,      ///< integrated from gravity and coupling forces
-    Fixed,     ///< never moves (terrain, walls, baffles)
-    Prescribed ///< velocity and angular velocity given as functions of time
+    Free,       ///< integrated from gravity and coupling forces
+    Fixed,      ///< never moves (terrain, walls, baffles)
+    Prescribed, ///< velocity and angular velocity given as functions of time
+    Driven      ///< angular velocity given, translation free (a driven wheel)
 };
 
 /// A rigid body [004 §3]: shape, mass properties, pose and twist, and the integrators.
@@ -33,9 +34,13 @@ public:
     /// [deg]), velocity, angularVelocity (3D world-frame vector; 2D scalar [rad/s]), motion
     /// (free | fixed | {type: prescribed, velocity, angularVelocity} or a table
     /// {type: prescribed, table: [[t, vx, vy(, vz), ω…], …]} interpolated linearly, rows
-    /// strictly increasing in t, held constant beyond the ends; ω in the world frame). The
-    /// top-level velocity/angularVelocity are v^{-½}, ω^{-½} of a free body and an error with
-    /// fixed or prescribed motion. Exactly one of density, mass (> 0) for every motion.
+    /// strictly increasing in t, held constant beyond the ends; ω in the world frame) |
+    /// {type: driven, angularVelocity: ω} or {type: driven, table: [[t, ω…], …]} (rotation
+    /// prescribed, translation free). The top-level velocity is v^{-½} of a free or driven body,
+    /// angularVelocity ω^{-½} of a free body; otherwise they are errors. Exactly one of
+    /// density, mass (> 0) for every motion. A levelSet body may omit position: it then sits
+    /// where its mesh was (shape().meshPose()), and orientation is applied on top of the
+    /// mesh's own orientation.
     RigidBody(const Dictionary& dict, std::string name);
 
     const std::string& name() const { return name_; }
@@ -113,6 +118,8 @@ private:
     std::vector<std::vector<double>> table_;
 
     void updateRotation();
+    /// Rows (t, v…, ω…) of a prescribed motion (withVelocity) or (t, ω…) of a driven one.
+    void readMotionTable(const Dictionary& motion, bool withVelocity);
     /// ω^{n-½} from a world-frame vector (2D: component 2), stored in body axes.
     void setAngularVelocity(const Vec3& omegaWorld);
 };

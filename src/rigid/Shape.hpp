@@ -31,6 +31,10 @@ public:
     /// Surface for output, in the body frame: points (z = 0 in 2D) and cells (triangles in 3D,
     /// line segments in 2D) as point-index lists.
     virtual void surface(std::vector<Vec3>& points, std::vector<std::vector<int>>& cells) const = 0;
+    /// Where the body frame sat in the shape's source (a mesh): x_source = centroid + R x_body.
+    /// False (the default) for shapes without a source frame; a body of such a shape must give
+    /// its position.
+    virtual bool meshPose(Vec<dim>& /*centroid*/, Mat<dim>& /*rotation*/) const { return false; }
 
     /// Build the shape named by `type:` (sphere, disk, box, …).
     static std::unique_ptr<Shape> create(const Dictionary& dict);

@@ -218,7 +218,8 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     bool driven = false;
     for (const auto& b : bodies_) {
         bodyEnergy += b->kineticEnergy() + b->mass() * extent;
-        driven |= b->motion() == Motion::Prescribed; // prescribed motion can do unbounded work
+        // Prescribed and driven motions can do unbounded work.
+        driven |= b->motion() == Motion::Prescribed || b->motion() == Motion::Driven;
     }
     energyBudget_ = 10.0 * (kinetic + strain + mass * extent + bodyEnergy);
     if (energyBudget_ <= 0 || driven) energyBudget_ = 1e300;

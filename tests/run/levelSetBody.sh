@@ -25,6 +25,7 @@ writeInterval: 0.025
 functions:
   body: {type: rigidBodyState}
   gap: {type: contactGap}
+  com: {type: centreOfMass, material: sand}
 YAML
 printf 'kernel: gimp\ntransfer: {type: flip, ratio: 0.995}\n' >"$c/system/mpmSchemes"
 echo 'value: [0, 0, -9.81]' >"$c/constant/g"
@@ -58,13 +59,18 @@ import sys, numpy as np, vtk
 case = sys.argv[1]
 gap = np.loadtxt(case + "/postProcessing/gap/0/gap.dat", comments="#", ndmin=2)
 body = np.loadtxt(case + "/postProcessing/body/0/body.dat", comments="#", ndmin=2)
+com = np.loadtxt(case + "/postProcessing/com/0/com.dat", comments="#", ndmin=2)
+massDrift = abs(com[:, 1] / com[0, 1] - 1).max()
+expected = 1500 * 0.12 * 0.12 * 0.048
 vz = body[-1, 6]
 freeFall = -1.5 - 9.81 * body[-1, 0]
 r = vtk.vtkXMLPolyDataReader(); r.SetFileName(case + "/0.05/rigidBodies.vtp"); r.Update()
 tris = r.GetOutput().GetNumberOfCells()
-ok = gap[:, 2].min() > 0 and abs(vz) < 0.5 * abs(freeFall) and tris > 0
+ok = (gap[:, 2].min() > 0 and abs(vz) < 0.5 * abs(freeFall) and tris > 0
+      and massDrift < 1e-12 and abs(com[0, 1] / expected - 1) < 1e-9)
 print(f"levelSetBody: smallest gap {gap[:, 2].min():.3e} m, final vz {vz:.3f} m/s "
-      f"(free fall {freeFall:.3f}), {tris} surface triangles: {'PASS' if ok else 'FAIL'}")
+      f"(free fall {freeFall:.3f}), {tris} surface triangles, sand mass {com[0, 1]:.6g} kg "
+      f"(box {expected:.6g}, drift {massDrift:.1e}): {'PASS' if ok else 'FAIL'}")
 sys.exit(0 if ok else 1)
 PY
 

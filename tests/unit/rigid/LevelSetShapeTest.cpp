@@ -3,6 +3,7 @@
 
 #include "core/Error.hpp"
 #include "levelset/LevelSetFile.hpp"
+#include "rigid/RigidBody.hpp"
 
 #include <gtest/gtest.h>
 
@@ -226,6 +227,33 @@ TEST(LevelSetShape, Errors) {
     EXPECT_THROW(Shape<2>::create(Dictionary::fromString(
                      "{type: levelSet, file: " + file.string() + "}", "test")),
                  InputError);
+}
+
+/// A levelSet body without `position` sits where its mesh was: centroid at the file's
+/// centroid and rotation R = the file's rotation (body → mesh), so a body-frame point maps to
+/// the mesh point it came from; `orientation` turns the mesh about its centroid and `position`
+/// moves the centroid.
+TEST(LevelSetShape, BodyPoseDefaultsToTheMeshPose) {
+    TempDir tmp;
+    const fs::path file = tmp.path / "tilted.vti";
+    levelset::LevelSet ls = sphereLevelSet(0.1);
+    ls.centroid = Vec3(1.0, 2.0, 3.0);
+    ls.rotation = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    levelset::writeVti(file, ls);
+    const std::string shape = "shape: {type: levelSet, file: " + file.string() + "}\ndensity: 1\n";
+
+    const RigidBody<3> atMesh(Dictionary::fromString(shape, "test"), "b");
+    EXPECT_LT((atMesh.position() - ls.centroid).norm(), 1e-12);
+    EXPECT_LT((atMesh.rotation() - ls.rotation).norm(), 1e-6); // the file stores %.9g
+
+    const RigidBody<3> moved(
+        Dictionary::fromString(shape + "position: [0, 0, 1]\n"
+                                       "orientation: {axis: [0, 0, 1], angle: 90}\n",
+                               "test"),
+        "b");
+    const Mat3 quarter = Eigen::AngleAxisd(pi / 2, Vec3::UnitZ()).toRotationMatrix();
+    EXPECT_EQ(moved.position(), Vec3(0, 0, 1));
+    EXPECT_LT((moved.rotation() - quarter * ls.rotation).norm(), 1e-6);
 }
 
 } // namespace

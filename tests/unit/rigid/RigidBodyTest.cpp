@@ -168,6 +168,51 @@ TEST(RigidBodyTest, PrescribedTable) {
                      .empty());
 }
 
+/// Driven: ω from the motion (constant or a table), translation free under gravity and the
+/// coupling force, which does not turn it; an impulse changes v only.
+TEST(RigidBodyTest, DrivenRotatesAsToldAndTranslatesFreely) {
+    auto b = makeBody<3>("shape: {type: sphere, radius: 1}\nmass: 2\nposition: [0, 0, 0]\n"
+                         "velocity: [1, 0, 0]\n"
+                         "motion: {type: driven, angularVelocity: [0, 0, 0.5]}\n");
+    EXPECT_EQ(b->motion(), Motion::Driven);
+    const double dt = 0.01;
+    for (int i = 0; i < 200; ++i) {
+        b->clearForces();
+        b->addForce(Vec3(4, 0, 0), Vec3(0, 1, 0)); // a = 2 m/s², its torque is ignored
+        b->advance(dt, i * dt, Vec3(0, 0, -1));
+    }
+    // x = v0 t + ½ a t (t + Δt) per axis (see FreeFall), t = 2 s.
+    EXPECT_NEAR(b->position().x(), 2.0 + 0.5 * 2.0 * 2.0 * 2.01, 1e-12);
+    EXPECT_NEAR(b->position().z(), -0.5 * 2.0 * 2.01, 1e-12);
+    EXPECT_LT((b->rotation() - rotZ(1.0)).norm(), 1e-13);
+    b->applyImpulse(Vec3(0, 2, 0), b->position() + Vec3(1, 0, 0));
+    EXPECT_NEAR(b->velocity().y(), 1.0, 1e-15);
+    EXPECT_LT((b->angularVelocity() - Vec3(0, 0, 0.5)).norm(), 1e-15);
+
+    // 2D table (t, ω): ω = 2 t on [0, 1].
+    auto c = makeBody<2>("shape: {type: disk, radius: 1}\ndensity: 1\nposition: [0, 0]\n"
+                         "motion: {type: driven, table: [[0, 0], [1, 2]]}\n");
+    for (int i = 0; i < 100; ++i)
+        c->advance(dt, i * dt, Vec<2>(0, -2));
+    EXPECT_LT((c->rotation() - rotZ(1.0).topLeftCorner<2, 2>()).norm(), 1e-13);
+    EXPECT_NEAR(c->position().y(), -0.5 * 2 * 1.01, 1e-12);
+
+    // Errors: ω is required, the table has (t, ω…) columns, angularVelocity belongs in motion.
+    EXPECT_FALSE(errorOf<3>("shape: {type: sphere, radius: 1}\ndensity: 1\nposition: [0, 0, 0]\n"
+                            "motion: {type: driven}\n")
+                     .empty());
+    EXPECT_FALSE(errorOf<3>("shape: {type: sphere, radius: 1}\ndensity: 1\nposition: [0, 0, 0]\n"
+                            "motion: {type: driven, table: [[0, 0, 0, 0, 1, 0, 0]]}\n")
+                     .empty());
+    EXPECT_FALSE(errorOf<3>("shape: {type: sphere, radius: 1}\ndensity: 1\nposition: [0, 0, 0]\n"
+                            "angularVelocity: [0, 0, 1]\n"
+                            "motion: {type: driven, angularVelocity: [0, 0, 1]}\n")
+                     .empty());
+    EXPECT_FALSE(errorOf<3>("shape: {type: sphere, radius: 1}\ndensity: 1\nposition: [0, 0, 0]\n"
+                            "motion: driven\n")
+                     .empty());
+}
+
 /// Torque-free box 1 × 2 × 3 spinning about a non-principal axis: Walton–Braun conserves
 /// the kinetic energy and the world angular momentum L = R I ω only approximately. ω is stored
 /// at half steps and R at whole steps, so L^n = R^n I (ω^{n-½} + ω^{n+½})/2 is compared; the
