@@ -122,6 +122,8 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     const Dictionary schemes = cs.read("system/mpmSchemes");
     usf_ = schemes.getWordOr("stressUpdate", "USL", {"USF", "USL"}) == "USF";
     damping_ = schemes.getScalarOr("damping", 0.0, Bounds::halfOpen(0.0, 1.0));
+    if (schemes.getWordOr("antiLocking", "none", {"none", "fBar"}) == "fBar")
+        fBar_ = std::make_unique<FBar<dim>>();
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
@@ -838,7 +840,8 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
 
 template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
     ScopedTimer timer(times_.constitutive);
-    // Kinematics: F ← (1 + Δt L) F, V = det(F) V⁰ [002 Eq. 76].
+    // Kinematics: [L ← L̄ (F̄ anti-locking)], F ← (1 + Δt L) F, V = det(F) V⁰ [002 Eq. 76].
+    if (fBar_) fBar_->apply(particles_, grid_, *transfer_, sort_, dt);
     const Index n = static_cast<Index>(particles_.size());
     Index inverted = n;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)

@@ -12,6 +12,7 @@
 #include "particles/Particles.hpp"
 #include "rigid/RigidBody.hpp"
 #include "solver/Simulation.hpp"
+#include "transfers/FBar.hpp"
 #include "transfers/Transfer.hpp"
 
 #include <array>
@@ -94,6 +95,7 @@ private:
     std::vector<std::string> materialNames_;
     std::vector<std::vector<Index>> materialParticles_;
     std::unique_ptr<Transfer<dim>> transfer_;
+    std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
     BlockSort<dim> sort_;
     bool usf_ = false;
     bool hasOpenFace_ = false;

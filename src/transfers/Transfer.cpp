@@ -4,6 +4,7 @@
 
 #include "kernels/Kernels.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -65,6 +66,37 @@ public:
             forStencil(st_[ids[k]], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
                 g.force[node] += wgt * f[k];
             });
+    }
+
+    void scatterScalar(const std::vector<double>& q, std::vector<double>& out,
+                       const BlockSort<dim>& sort) const override {
+        std::fill(out.begin(), out.end(), 0.0);
+        const auto& order = sort.order();
+        for (int colour = 0; colour < BlockSort<dim>::NumColours; ++colour) {
+            const auto& blocks = sort.blocksOfColour(colour);
+            const Index nb = static_cast<Index>(blocks.size());
+#pragma omp parallel for if (worthThreads(static_cast <Index>(q.size()))) schedule(dynamic, 1)
+            for (Index bi = 0; bi < nb; ++bi) {
+                for (Index j = sort.start(blocks[bi]); j < sort.start(blocks[bi] + 1); ++j) {
+                    const Index i = order[j];
+                    forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&,
+                                           const Vec<dim>&) { out[node] += wgt * q[i]; });
+                }
+            }
+        }
+    }
+
+    void gatherScalar(const std::vector<double>& q, std::vector<double>& out) const override {
+        const Index n = static_cast<Index>(st_.size());
+        out.resize(n);
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index i = 0; i < n; ++i) {
+            double sum = 0.0;
+            forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
+                sum += wgt * q[node];
+            });
+            out[i] = sum;
+        }
     }
 
     void velocityGradient(Particles<dim>& p, const Grid<dim>& g) override {

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "grid/Grid.hpp"
+#include "particles/BlockSort.hpp"
+#include "particles/Particles.hpp"
+#include "transfers/Transfer.hpp"
+
+#include <vector>
+
+namespace mpm {
+
+/// F̄ anti-locking (system/mpmSchemes `antiLocking: fBar`), the assumed deformation gradient
+/// with a volume average built from the particle–grid transfers (Zhao, Jiang & Choo 2022,
+/// "Circumventing volumetric locking in explicit material point methods", cited in [004 §5.2]).
+///
+/// Isochoric plastic flow (μ(I), Drucker–Prager with ψ = 0) asks every point to keep its
+/// volume, which the few grid velocities cannot honour point by point: the volume changes
+/// ΔJ_p oscillate from point to point and so does the pressure (volumetric locking). F̄
+/// replaces each point's volume change by its neighbourhood's average and keeps its own
+/// isochoric part:
+///
+///     ΔF_p = I + Δt L_p,  ΔJ_p = det ΔF_p                      (this step's increment)
+///     ΔJ_i = Σ_p w_ip m_p ΔJ_p / m_i                           (mass-weighted nodal average)
+///     ΔJ̄_p = Σ_i w_ip ΔJ_i
+///     ΔF̄_p = (ΔJ̄_p / ΔJ_p)^(1/d) ΔF_p,   L̄_p = (ΔF̄_p − I) / Δt
+///
+/// with d = dim (plane strain: the in-plane volume). The mass weights m_p = ρ_p V_p equal the
+/// paper's volume weights for uniform density and reuse the grid mass of this step's P2G. The
+/// weights are those of x^n (the stencils the step's L_p came from). L̄ replaces L, so every
+/// material and the solver's F ← ΔF F, V = J V⁰ see the averaged volume change. A uniform ΔJ is
+/// kept exactly (Σ_i w_ip = 1), and the total volume change Σ m_p ΔJ_p is preserved.
+template <int dim> class FBar {
+public:
+    /// Replace p.L by L̄ (grid mass from this step's P2G).
+    void apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>& transfer,
+               const BlockSort<dim>& sort, double dt);
+
+private:
+    std::vector<double> weighted_; ///< m_p ΔJ_p
+    std::vector<double> nodal_;    ///< Σ_p w_ip m_p ΔJ_p, then ΔJ_i
+    std::vector<double> average_;  ///< ΔJ̄_p
+};
+
+} // namespace mpm
