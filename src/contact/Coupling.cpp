@@ -11,11 +11,15 @@ Coupling<dim>::Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws)
 
 template <int dim>
 template <class Fn>
-void Coupling<dim>::forParticlesNear(const Vec<dim>& centre, double radius,
+void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, double reach,
                                      const BlockSort<dim>& sort, const Grid<dim>& grid,
                                      Fn&& fn) const {
     // Block range of the ball's bounding box, one cell of margin for motion within the step.
+    const Vec<dim>& centre = body.position();
+    const double radius = body.shape().boundingRadius() + reach;
     const double size = Grid<dim>::BlockSize * grid.h();
+    // One cell for the motion within the step, one of margin for a sampled distance field.
+    const double cull = 0.5 * size * std::sqrt(double(dim)) + 2.0 * grid.h() + reach;
     IVec<dim> lo, hi;
     for (int d = 0; d < dim; ++d) {
         lo[d] = std::max(0, static_cast<int>(std::floor(
@@ -31,8 +35,16 @@ void Coupling<dim>::forParticlesNear(const Vec<dim>& centre, double radius,
         Index b = 0;
         for (int d = dim - 1; d >= 0; --d)
             b = b * grid.blocks()[d] + c[d];
-        for (Index j = sort.start(b); j < sort.start(b + 1); ++j)
-            fn(order[j]);
+        if (sort.start(b) < sort.start(b + 1)) {
+            Vec<dim> blockCentre;
+            for (int d = 0; d < dim; ++d)
+                blockCentre[d] = grid.origin()[d] + (c[d] + 0.5) * size;
+            Vec<dim> normal;
+            if (body.distance(blockCentre, normal) <= cull) {
+                for (Index j = sort.start(b); j < sort.start(b + 1); ++j)
+                    fn(order[j]);
+            }
+        }
         int d = 0;
         while (d < dim && ++c[d] > hi[d])
             c[d] = lo[d], ++d;
@@ -56,19 +68,18 @@ void Coupling<dim>::computeForces(const Particles<dim>& p, std::vector<double>& 
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
         contacts_.clear();
-        forParticlesNear(body.position(), body.shape().boundingRadius() + rpMax, sort, grid,
-                         [&](Index i) {
-                             const double rp = radius(p.volume0[i]);
-                             Vec<dim> n;
-                             const double phi = body.distance(p.x[i], n);
-                             if (phi >= rp) {
-                                 slip[i] = 0; // out of contact: the slip history restarts
-                                 return;
-                             }
-                             const int m = p.material[i];
-                             contacts_.push_back({i, phi, n, p.v[i] - body.velocityAt(p.x[i]), rp,
-                                                  p.mass[i], wave[m]});
-                         });
+        forParticlesNear(body, rpMax, sort, grid, [&](Index i) {
+            const double rp = radius(p.volume0[i]);
+            Vec<dim> n;
+            const double phi = body.distance(p.x[i], n);
+            if (phi >= rp) {
+                slip[i] = 0; // out of contact: the slip history restarts
+                return;
+            }
+            const int m = p.material[i];
+            contacts_.push_back(
+                {i, phi, n, p.v[i] - body.velocityAt(p.x[i]), rp, p.mass[i], wave[m]});
+        });
         forces_.resize(contacts_.size());
         laws_[b]->forces(contacts_, dt, slip, forces_);
         for (std::size_t k = 0; k < contacts_.size(); ++k) {
@@ -101,29 +112,28 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
         const CouplingLaw<dim>& law = *laws_[b];
-        forParticlesNear(body.position(), body.shape().boundingRadius() + rpMax, sort, grid,
-                         [&](Index i) {
-                             Vec<dim> n;
-                             const double phi = body.distance(p.x[i], n);
-                             if (law.nonPenetrating()) {
-                                 const double gap = law.minimumGap(radius(p.volume0[i]));
-                                 if (phi < gap) {
-                                     // Back to ξ_min along the normal; no approaching velocity.
-                                     // The momentum the point loses goes to the body.
-                                     p.x[i] += (gap - phi) * n;
-                                     const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(n);
-                                     if (vn < 0) {
-                                         p.v[i] -= vn * n;
-                                         body.applyImpulse(p.mass[i] * vn * n, p.x[i]);
-                                     }
-                                     ++moved;
-                                     Vec<dim> n2;
-                                     minGap_ = std::min(minGap_, body.distance(p.x[i], n2));
-                                     return;
-                                 }
-                             }
-                             minGap_ = std::min(minGap_, phi);
-                         });
+        forParticlesNear(body, rpMax, sort, grid, [&](Index i) {
+            Vec<dim> n;
+            const double phi = body.distance(p.x[i], n);
+            if (law.nonPenetrating()) {
+                const double gap = law.minimumGap(radius(p.volume0[i]));
+                if (phi < gap) {
+                    // Back to ξ_min along the normal; no approaching velocity.
+                    // The momentum the point loses goes to the body.
+                    p.x[i] += (gap - phi) * n;
+                    const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(n);
+                    if (vn < 0) {
+                        p.v[i] -= vn * n;
+                        body.applyImpulse(p.mass[i] * vn * n, p.x[i]);
+                    }
+                    ++moved;
+                    Vec<dim> n2;
+                    minGap_ = std::min(minGap_, body.distance(p.x[i], n2));
+                    return;
+                }
+            }
+            minGap_ = std::min(minGap_, phi);
+        });
     }
     return moved;
 }

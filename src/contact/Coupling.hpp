@@ -56,7 +56,9 @@ public:
     Index enforceGap(Particles<dim>& p, std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                      const BlockSort<dim>& sort, const Grid<dim>& grid) const;
 
-    /// Smallest gap ξ of any point to a coupled body after the last enforceGap (or +inf) [m].
+    /// Smallest gap ξ of any point near a coupled body after the last enforceGap [m]: the
+    /// points of the blocks the broad phase keeps (all within r_p of a surface among them);
+    /// +inf when no point is near a body.
     double minimumGapSeen() const { return minGap_; }
 
     /// The contact limit on Δt over all laws for the lightest point [000 Eq. 24].
@@ -66,9 +68,14 @@ public:
     Index numContacts() const { return numContacts_; }
 
 private:
-    /// Visit the particles of the blocks that overlap the ball (centre, radius).
+    /// Visit the particles that may be within `reach` of the body's surface: those of the
+    /// blocks that overlap its bounding ball grown by `reach`, less the blocks whose centre is
+    /// farther from the surface than the block's half-diagonal + 2h + reach (φ is a distance, so
+    /// no point of such a block can be within reach, even after moving one cell this step).
+    /// The narrow phase then costs per point near the surface, not per point inside the
+    /// bounding ball (a terrain's ball holds every point).
     template <class Fn>
-    void forParticlesNear(const Vec<dim>& centre, double radius, const BlockSort<dim>& sort,
+    void forParticlesNear(const RigidBody<dim>& body, double reach, const BlockSort<dim>& sort,
                           const Grid<dim>& grid, Fn&& fn) const;
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
