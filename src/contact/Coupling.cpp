@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/Coupling.hpp"
 
+#include "core/Parallel.hpp"
+
 #include <cmath>
 
 namespace mpm {
@@ -63,23 +65,23 @@ void Coupling<dim>::computeForces(const Particles<dim>& p, std::vector<double>& 
     localPoints_.clear();
     localForces_.clear();
     numContacts_ = 0;
-    const double rpMax = maxRadius_;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
+        // Narrow phase in parallel over the broad phase's points, kept in their order.
+        nearPoints(body, p, sort, grid);
         contacts_.clear();
-        forParticlesNear(body, rpMax, sort, grid, [&](Index i) {
+        for (std::size_t k = 0; k < near_.size(); ++k) {
+            const Index i = near_[k];
             const double rp = radius(p.volume0[i]);
-            Vec<dim> n;
-            const double phi = body.distance(p.x[i], n);
-            if (phi >= rp) {
+            if (phi_[k] >= rp) {
                 slip[i] = 0; // out of contact: the slip history restarts
-                return;
+                continue;
             }
             const int m = p.material[i];
-            contacts_.push_back(
-                {i, phi, n, p.v[i] - body.velocityAt(p.x[i]), rp, p.mass[i], wave[m]});
-        });
+            contacts_.push_back({i, phi_[k], normals_[k], p.v[i] - body.velocityAt(p.x[i]), rp,
+                                 p.mass[i], wave[m]});
+        }
         forces_.resize(contacts_.size());
         laws_[b]->forces(contacts_, dt, slip, forces_);
         for (std::size_t k = 0; k < contacts_.size(); ++k) {
@@ -106,36 +108,59 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                                 std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                                 const BlockSort<dim>& sort, const Grid<dim>& grid) const {
     Index moved = 0;
-    minGap_ = 1e300;
-    const double rpMax = maxRadius_;
+    double minGap = 1e300;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
         const CouplingLaw<dim>& law = *laws_[b];
-        forParticlesNear(body, rpMax, sort, grid, [&](Index i) {
-            Vec<dim> n;
-            const double phi = body.distance(p.x[i], n);
-            if (law.nonPenetrating()) {
+        nearPoints(body, p, sort, grid);
+        const Index n = static_cast<Index>(near_.size());
+        impulses_.assign(n, Vec<dim>::Zero());
+        if (law.nonPenetrating()) {
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : moved)            \
+    reduction(min : minGap)
+            for (Index k = 0; k < n; ++k) {
+                const Index i = near_[k];
                 const double gap = law.minimumGap(radius(p.volume0[i]));
-                if (phi < gap) {
-                    // Back to ξ_min along the normal; no approaching velocity.
-                    // The momentum the point loses goes to the body.
-                    p.x[i] += (gap - phi) * n;
-                    const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(n);
-                    if (vn < 0) {
-                        p.v[i] -= vn * n;
-                        body.applyImpulse(p.mass[i] * vn * n, p.x[i]);
-                    }
-                    ++moved;
-                    Vec<dim> n2;
-                    minGap_ = std::min(minGap_, body.distance(p.x[i], n2));
-                    return;
+                if (phi_[k] >= gap) {
+                    minGap = std::min(minGap, phi_[k]);
+                    continue;
                 }
+                // Back to ξ_min along the normal; no approaching velocity. The momentum the
+                // point loses goes to the body (below, in order: deterministic).
+                const Vec<dim>& nk = normals_[k];
+                p.x[i] += (gap - phi_[k]) * nk;
+                const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(nk);
+                if (vn < 0) {
+                    p.v[i] -= vn * nk;
+                    impulses_[k] = p.mass[i] * vn * nk;
+                }
+                ++moved;
+                Vec<dim> n2;
+                minGap = std::min(minGap, body.distance(p.x[i], n2));
             }
-            minGap_ = std::min(minGap_, phi);
-        });
+            for (Index k = 0; k < n; ++k)
+                if (impulses_[k].squaredNorm() > 0) body.applyImpulse(impulses_[k], p.x[near_[k]]);
+        } else {
+            for (Index k = 0; k < n; ++k)
+                minGap = std::min(minGap, phi_[k]);
+        }
     }
+    minGap_ = minGap;
     return moved;
+}
+
+template <int dim>
+void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const Particles<dim>& p,
+                               const BlockSort<dim>& sort, const Grid<dim>& grid) const {
+    near_.clear();
+    forParticlesNear(body, maxRadius_, sort, grid, [&](Index i) { near_.push_back(i); });
+    const Index n = static_cast<Index>(near_.size());
+    phi_.resize(n);
+    normals_.resize(n);
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+    for (Index k = 0; k < n; ++k)
+        phi_[k] = body.distance(p.x[near_[k]], normals_[k]);
 }
 
 template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p) {

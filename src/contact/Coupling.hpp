@@ -78,7 +78,15 @@ private:
     void forParticlesNear(const RigidBody<dim>& body, double reach, const BlockSort<dim>& sort,
                           const Grid<dim>& grid, Fn&& fn) const;
 
+    /// The points the broad phase keeps for `body` (near_, in block order) with their signed
+    /// distance phi_ and normal normals_, evaluated in parallel.
+    void nearPoints(const RigidBody<dim>& body, const Particles<dim>& p, const BlockSort<dim>& sort,
+                    const Grid<dim>& grid) const;
+
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
+    mutable std::vector<Index> near_;
+    mutable std::vector<double> phi_;
+    mutable std::vector<Vec<dim>> normals_, impulses_;
     std::vector<Contact<dim>> contacts_;
     std::vector<Vec<dim>> forces_;
     std::vector<Index> gridPoints_, localPoints_;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/CouplingLaw.hpp"
 
+#include "core/Parallel.hpp"
+
 #include <cmath>
 
 namespace mpm {
@@ -60,7 +62,9 @@ public:
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
         const double fourPi2OverH2 = 4.0 * M_PI * M_PI / (this->h_ * this->h_);
-        for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const Index n = static_cast<Index>(contacts.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index k = 0; k < n; ++k) {
             const Contact<dim>& c = contacts[k];
             const double xi = std::max(c.phi, this->minimumGap(c.rp));
             double fn = 0;
@@ -72,9 +76,13 @@ public:
             f[k] = fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
         }
     }
-    bool nonPenetrating() const override { return true; }
+    bool nonPenetrating() const override {
+        return true;
+    }
     /// κ is chosen so that 2π√(m_p/k_N) ≥ h/c for ξ ≥ ξ̄: the contact does not lower Δt.
-    double stableDeltaT(double, double) const override { return 1e300; }
+    double stableDeltaT(double, double) const override {
+        return 1e300;
+    }
 
 private:
     double xiBar_ = 0.2;
@@ -94,7 +102,9 @@ public:
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
         const double fourPi2OverH2 = 4.0 * M_PI * M_PI / (this->h_ * this->h_);
-        for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const Index n = static_cast<Index>(contacts.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index k = 0; k < n; ++k) {
             const Contact<dim>& c = contacts[k];
             const double kN =
                 stiffness_ > 0 ? stiffness_ : c.mass * c.wave * c.wave * fourPi2OverH2;
@@ -102,7 +112,9 @@ public:
             f[k] = fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
         }
     }
-    bool nonPenetrating() const override { return false; }
+    bool nonPenetrating() const override {
+        return false;
+    }
     /// Δt ≤ 2π √(m_p / k_N) [000 Eq. 24].
     double stableDeltaT(double m, double c) const override {
         const double kN =
