@@ -469,6 +469,9 @@ void SignedDistance::evaluate(RegularGrid& grid) const {
     // segment between them (d_i + d_{i+1} > h: no surface crossed; the values outside the band
     // are upper bounds, but there the true distance exceeds the band ≥ h), else the winding
     // number. The first node of a row takes its sign along the column i = 0 the same way.
+    // The test has a relative margin: a face exactly halfway between two nodes gives
+    // d_i + d_{i+1} = h, which rounding must not turn into "covered".
+    const double cover = h * (1.0 + 1e-6);
     grid.values.resize(np);
     std::vector<double> d(np);
 #pragma omp parallel for schedule(static)
@@ -485,7 +488,7 @@ void SignedDistance::evaluate(RegularGrid& grid) const {
         double prevSign = 1.0;
         for (int j = 0; j < ny; ++j) {
             const std::size_t id = grid.index(0, j, k);
-            const bool carry = j > 0 && d[id - sy] + d[id] > h;
+            const bool carry = j > 0 && d[id - sy] + d[id] > cover;
             prevSign = carry ? prevSign : insideSign(grid.point(0, j, k));
             firstSign[static_cast<std::size_t>(j) +
                       static_cast<std::size_t>(ny) * static_cast<std::size_t>(k)] = prevSign;
@@ -497,7 +500,7 @@ void SignedDistance::evaluate(RegularGrid& grid) const {
         double sign = firstSign[static_cast<std::size_t>(row)];
         for (int i = 0; i < nx; ++i) {
             const std::size_t id = grid.index(i, j, k);
-            if (i > 0 && !(d[id - sx] + d[id] > h)) sign = insideSign(grid.point(i, j, k));
+            if (i > 0 && !(d[id - sx] + d[id] > cover)) sign = insideSign(grid.point(i, j, k));
             grid.values[id] = sign * d[id];
         }
     }
@@ -522,7 +525,7 @@ void SignedDistance::evaluateExact(RegularGrid& grid) const {
                                               : std::numeric_limits<double>::infinity();
             const double d = std::sqrt(squaredDistance(x, bound * bound));
             double sign;
-            if (prevD >= 0.0 && prevD + d > h) {
+            if (prevD >= 0.0 && prevD + d > h * (1.0 + 1e-6)) { // margin: see evaluate()
                 sign = prevSign; // the balls of radius d cover the segment: no surface crossed
             } else {
                 sign = std::abs(windingNumber(x)) > 0.5 ? -1.0 : 1.0;

@@ -172,6 +172,27 @@ TEST(SignedDistance, fastGridMatchesBruteForce) {
               << " inexact " << nInexact << " max relative error " << maxFar << '\n';
 }
 
+/// Faces exactly halfway between grid nodes (the case a helper found: a 0.4 m cube on a grid
+/// with h = 8 mm starting at −0.284 m): d_i + d_{i+1} = h there, and the sign must still flip.
+TEST(SignedDistance, facesHalfwayBetweenNodes) {
+    const Vec3 half(0.2, 0.2, 0.2);
+    const SignedDistance sdf(box(half));
+    RegularGrid grid;
+    grid.origin = Vec3::Constant(-0.284);
+    grid.spacing = 0.008;
+    grid.dims = {72, 72, 72};
+    for (int exact = 0; exact < 2; ++exact) {
+        exact ? sdf.evaluateExact(grid) : sdf.evaluate(grid);
+        std::size_t wrong = 0;
+        for (int k = 0; k < 72; ++k)
+            for (int j = 0; j < 72; ++j)
+                for (int i = 0; i < 72; ++i)
+                    wrong += (grid.values[grid.index(i, j, k)] < 0.0) !=
+                             (boxSdf(grid.point(i, j, k), half) < 0.0);
+        EXPECT_EQ(wrong, 0U) << (exact ? "evaluateExact" : "evaluate");
+    }
+}
+
 TEST(SignedDistance, fastGridIsIndependentOfThreads) {
 #ifdef _OPENMP
     const SignedDistance sdf(bumpySphere());
