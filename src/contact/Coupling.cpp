@@ -93,6 +93,10 @@ void Coupling<dim>::computeForces(const Particles<dim>& p, std::vector<double>& 
             (gasified ? localForces_ : gridForces_).push_back(forces_[k]);
         }
         numContacts_ += static_cast<Index>(contacts_.size());
+        nearOf_.resize(bodies.size());
+        phiOf_.resize(bodies.size());
+        nearOf_[b].swap(near_);
+        phiOf_[b].swap(phi_);
     }
 }
 
@@ -106,45 +110,54 @@ template <int dim> void Coupling<dim>::applyLocalForces(Particles<dim>& p, doubl
 template <int dim>
 Index Coupling<dim>::enforceGap(Particles<dim>& p,
                                 std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                                const BlockSort<dim>& sort, const Grid<dim>& grid) const {
+                                double maxDisplacement, double dt) const {
     Index moved = 0;
     double minGap = 1e300;
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
+    double pushed = 0.0; // largest projection so far: points pushed out of one body move
+    for (std::size_t b = 0; b < bodies.size() && b < nearOf_.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
         const CouplingLaw<dim>& law = *laws_[b];
-        nearPoints(body, p, sort, grid);
-        const Index n = static_cast<Index>(near_.size());
+        const std::vector<Index>& near = nearOf_[b];
+        const std::vector<double>& phi0 = phiOf_[b];
+        const double reach = maxDisplacement + pushed +
+                             dt * (body.velocity().norm() +
+                                   body.angularVelocity().norm() * body.shape().boundingRadius());
+        const Index n = static_cast<Index>(near.size());
         impulses_.assign(n, Vec<dim>::Zero());
-        if (law.nonPenetrating()) {
+        const bool project = law.nonPenetrating();
+        double push = 0.0;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : moved)            \
-    reduction(min : minGap)
-            for (Index k = 0; k < n; ++k) {
-                const Index i = near_[k];
-                const double gap = law.minimumGap(radius(p.volume0[i]));
-                if (phi_[k] >= gap) {
-                    minGap = std::min(minGap, phi_[k]);
-                    continue;
-                }
-                // Back to ξ_min along the normal; no approaching velocity. The momentum the
-                // point loses goes to the body (below, in order: deterministic).
-                const Vec<dim>& nk = normals_[k];
-                p.x[i] += (gap - phi_[k]) * nk;
-                const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(nk);
-                if (vn < 0) {
-                    p.v[i] -= vn * nk;
-                    impulses_[k] = p.mass[i] * vn * nk;
-                }
-                ++moved;
-                Vec<dim> n2;
-                minGap = std::min(minGap, body.distance(p.x[i], n2));
+    reduction(min : minGap) reduction(max : push)
+        for (Index k = 0; k < n; ++k) {
+            const Index i = near[k];
+            const double gap = project ? law.minimumGap(radius(p.volume0[i])) : -1e300;
+            if (phi0[k] - reach > std::max(gap, 0.0)) {
+                minGap = std::min(minGap, phi0[k] - reach); // cannot be closer: skipped
+                continue;
             }
-            for (Index k = 0; k < n; ++k)
-                if (impulses_[k].squaredNorm() > 0) body.applyImpulse(impulses_[k], p.x[near_[k]]);
-        } else {
-            for (Index k = 0; k < n; ++k)
-                minGap = std::min(minGap, phi_[k]);
+            Vec<dim> nk;
+            const double phi = body.distance(p.x[i], nk);
+            if (phi >= gap) {
+                minGap = std::min(minGap, phi);
+                continue;
+            }
+            // Back to ξ_min along the normal; no approaching velocity. The momentum the point
+            // loses goes to the body (below, in order: deterministic).
+            p.x[i] += (gap - phi) * nk;
+            push = std::max(push, gap - phi);
+            const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(nk);
+            if (vn < 0) {
+                p.v[i] -= vn * nk;
+                impulses_[k] = p.mass[i] * vn * nk;
+            }
+            ++moved;
+            Vec<dim> n2;
+            minGap = std::min(minGap, body.distance(p.x[i], n2));
         }
+        for (Index k = 0; k < n; ++k)
+            if (impulses_[k].squaredNorm() > 0) body.applyImpulse(impulses_[k], p.x[near[k]]);
+        pushed += push;
     }
     minGap_ = minGap;
     return moved;

@@ -48,17 +48,23 @@ public:
     const std::vector<Index>& gridPoints() const { return gridPoints_; }
     const std::vector<Vec<dim>>& gridForces() const { return gridForces_; }
 
-    /// Apply the forces of gasified points to their own velocity (after G2P).
+    /// Apply the forces of gasified points to their own velocity (after G2P) [000 Eq. 19].
+    /// Positions move with the grid velocity [000 Eq. 16], which does not see this force, so a
+    /// gasified point resting on a body stores the kicks of many steps in its FLIP velocity,
+    /// up to η/(1 − η) Δt f/m_p, without moving (docs/granularImpact.md, limitations).
     void applyLocalForces(Particles<dim>& p, double dt) const;
 
     /// Project points closer than ξ_min to a non-penetrating body back out (after the bodies
-    /// advanced). Returns the number of points moved.
+    /// advanced). Returns the number of points moved. It reuses this step's broad phase and
+    /// distances from computeForces (same sort): a point whose distance then, less
+    /// `maxDisplacement` (the largest point displacement of the step, |v|max Δt) and the body's
+    /// own displacement (|v_b| + |ω| R) Δt, still exceeds ξ_min cannot be inside and is skipped;
+    /// only the others are evaluated again.
     Index enforceGap(Particles<dim>& p, std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                     const BlockSort<dim>& sort, const Grid<dim>& grid) const;
+                     double maxDisplacement, double dt) const;
 
-    /// Smallest gap ξ of any point near a coupled body after the last enforceGap [m]: the
-    /// points of the blocks the broad phase keeps (all within r_p of a surface among them);
-    /// +inf when no point is near a body.
+    /// Smallest gap ξ of any point near a coupled body after the last enforceGap [m] (a lower
+    /// bound: points skipped there count with their bound); +inf when no point is near a body.
     double minimumGapSeen() const { return minGap_; }
 
     /// The contact limit on Δt over all laws for the lightest point [000 Eq. 24].
@@ -87,6 +93,9 @@ private:
     mutable std::vector<Index> near_;
     mutable std::vector<double> phi_;
     mutable std::vector<Vec<dim>> normals_, impulses_;
+    /// Per body: this step's broad-phase points and their distances at x^n (for enforceGap).
+    std::vector<std::vector<Index>> nearOf_;
+    std::vector<std::vector<double>> phiOf_;
     std::vector<Contact<dim>> contacts_;
     std::vector<Vec<dim>> forces_;
     std::vector<Index> gridPoints_, localPoints_;

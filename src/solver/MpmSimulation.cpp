@@ -593,7 +593,7 @@ template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
     ScopedTimer timer(times_.bodies);
     for (auto& b : bodies_)
         b->advance(dt, time_->value() - dt, gravity_);
-    if (coupling_) coupling_->enforceGap(particles_, bodies_, sort_, grid_);
+    if (coupling_) coupling_->enforceGap(particles_, bodies_, maxMoveSpeed_ * dt, dt);
     for (const auto& b : bodies_) {
         if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
             fail("rigid bodies", -1, "rigid body '" + b->name() + "' has a non-finite state");
@@ -817,6 +817,7 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     lastKinetic_ = st.kineticEnergy;
     if (st.firstNonFinite >= 0) fail("G2P", st.firstNonFinite, "has a velocity that is not finite");
     maxSpeed_ = st.maxSpeed;
+    maxMoveSpeed_ = st.maxMoveSpeed;
     if (maxSpeed_ * dt > grid_.h()) {
         Index worst = 0;
         for (Index i = 0; i < static_cast<Index>(particles_.size()); ++i)

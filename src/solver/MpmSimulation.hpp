@@ -121,6 +121,7 @@ private:
     std::unique_ptr<io::PvdIndex> pvd_, bodiesPvd_;
 
     double maxSpeed_ = 0;
+    double maxMoveSpeed_ = 0; ///< largest grid (PIC) speed a point moved with in the last G2P
     double maxWaveSpeed_ = 0;
     double lightestMass_ = 1e300;
     double energyBudget_ = 1e300;

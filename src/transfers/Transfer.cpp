@@ -281,9 +281,9 @@ private:
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();
         const double eta = ratio_;
-        double vmax2 = 0.0, ke = 0.0;
+        double vmax2 = 0.0, move2 = 0.0, ke = 0.0;
         Index bad = n;
-#pragma omp parallel for if(worthThreads(n)) schedule(static) reduction(max : vmax2) reduction(+ : ke) \
+#pragma omp parallel for if(worthThreads(n)) schedule(static) reduction(max : vmax2, move2) reduction(+ : ke) \
     reduction(min : bad)
         for (Index i = 0; i < n; ++i) {
             const Stencil& s = st_[i];
@@ -313,6 +313,7 @@ private:
             }
             if constexpr (Grad) p.L[i] = L * invH;
             p.x[i] += dt * vPic;
+            move2 = std::max(move2, vPic.squaredNorm());
             const double v2 = p.v[i].squaredNorm();
             if (!std::isfinite(v2) || !std::isfinite(p.x[i].sum())) bad = std::min(bad, i);
             vmax2 = std::max(vmax2, v2);
@@ -320,6 +321,7 @@ private:
         }
         GatherStats st;
         st.maxSpeed = std::sqrt(vmax2);
+        st.maxMoveSpeed = std::sqrt(move2);
         st.kineticEnergy = ke;
         st.firstNonFinite = bad < n ? bad : -1;
         return st;
