@@ -13,38 +13,55 @@ Coupling<dim>::Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws)
 
 template <int dim>
 template <class Fn>
-void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, double reach,
-                                     const BlockSort<dim>& sort, const Grid<dim>& grid,
-                                     Fn&& fn) const {
-    // Block range of the ball's bounding box, one cell of margin for motion within the step.
+void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Particles<dim>& p,
+                                     double reach, const BlockSort<dim>& sort,
+                                     const Grid<dim>& grid, Fn&& fn) const {
+    // Called right after the sort: every point lies in its block. Blocks of the ball's bounding
+    // box, then two culls by the distance φ (1-Lipschitz, one cell of margin for a sampled
+    // field): a block whose centre is farther than its half-diagonal + h + reach, then, inside a
+    // kept block, the 2^dim half-blocks (2 cells a side) likewise.
     const Vec<dim>& centre = body.position();
     const double radius = body.shape().boundingRadius() + reach;
     const double size = Grid<dim>::BlockSize * grid.h();
-    // One cell for the motion within the step, one of margin for a sampled distance field.
-    const double cull = 0.5 * size * std::sqrt(double(dim)) + 2.0 * grid.h() + reach;
+    const double halfDiagonal = 0.5 * size * std::sqrt(double(dim));
+    const double margin = grid.h() + reach;
     IVec<dim> lo, hi;
     for (int d = 0; d < dim; ++d) {
-        lo[d] = std::max(0, static_cast<int>(std::floor(
-                                (centre[d] - radius - grid.h() - grid.origin()[d]) / size)));
-        hi[d] = std::min(grid.blocks()[d] - 1,
-                         static_cast<int>(std::floor(
-                             (centre[d] + radius + grid.h() - grid.origin()[d]) / size)));
+        lo[d] = std::max(
+            0, static_cast<int>(std::floor((centre[d] - radius - grid.origin()[d]) / size)));
+        hi[d] =
+            std::min(grid.blocks()[d] - 1,
+                     static_cast<int>(std::floor((centre[d] + radius - grid.origin()[d]) / size)));
         if (hi[d] < lo[d]) return;
     }
     const auto& order = sort.order();
+    constexpr int NumHalves = 1 << dim;
     IVec<dim> c = lo;
     while (true) {
         Index b = 0;
         for (int d = dim - 1; d >= 0; --d)
             b = b * grid.blocks()[d] + c[d];
         if (sort.start(b) < sort.start(b + 1)) {
-            Vec<dim> blockCentre;
+            Vec<dim> corner;
             for (int d = 0; d < dim; ++d)
-                blockCentre[d] = grid.origin()[d] + (c[d] + 0.5) * size;
+                corner[d] = grid.origin()[d] + c[d] * size;
             Vec<dim> normal;
-            if (body.distance(blockCentre, normal) <= cull) {
-                for (Index j = sort.start(b); j < sort.start(b + 1); ++j)
-                    fn(order[j]);
+            if (body.distance(corner + Vec<dim>::Constant(0.5 * size), normal) <=
+                halfDiagonal + margin) {
+                int keep = 0; // bit q: half-block q (bit d of q: upper half along d) is near
+                for (int q = 0; q < NumHalves; ++q) {
+                    Vec<dim> half = corner;
+                    for (int d = 0; d < dim; ++d)
+                        half[d] += ((q >> d) & 1 ? 0.75 : 0.25) * size;
+                    if (body.distance(half, normal) <= 0.5 * halfDiagonal + margin) keep |= 1 << q;
+                }
+                for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+                    const Index i = order[j];
+                    int q = 0;
+                    for (int d = 0; d < dim; ++d)
+                        q |= (p.x[i][d] - corner[d] >= 0.5 * size) << d;
+                    if (keep >> q & 1) fn(i);
+                }
             }
         }
         int d = 0;
@@ -167,7 +184,7 @@ template <int dim>
 void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const Particles<dim>& p,
                                const BlockSort<dim>& sort, const Grid<dim>& grid) const {
     near_.clear();
-    forParticlesNear(body, maxRadius_, sort, grid, [&](Index i) { near_.push_back(i); });
+    forParticlesNear(body, p, maxRadius_, sort, grid, [&](Index i) { near_.push_back(i); });
     const Index n = static_cast<Index>(near_.size());
     phi_.resize(n);
     normals_.resize(n);

@@ -74,15 +74,15 @@ public:
     Index numContacts() const { return numContacts_; }
 
 private:
-    /// Visit the particles that may be within `reach` of the body's surface: those of the
-    /// blocks that overlap its bounding ball grown by `reach`, less the blocks whose centre is
-    /// farther from the surface than the block's half-diagonal + 2h + reach (φ is a distance, so
-    /// no point of such a block can be within reach, even after moving one cell this step).
-    /// The narrow phase then costs per point near the surface, not per point inside the
-    /// bounding ball (a terrain's ball holds every point).
+    /// Visit the particles that may be within `reach` of the body's surface, right after the
+    /// sort: those of the blocks that overlap its bounding ball grown by `reach`, less the
+    /// blocks, and then the half-blocks (2 cells a side), whose centre is farther from the
+    /// surface than their half-diagonal + h + reach (φ is a distance: no point there can be
+    /// within reach; h is a margin for a sampled field). The narrow phase then costs per point
+    /// near the surface, not per point inside the bounding ball (a terrain's ball holds them all).
     template <class Fn>
-    void forParticlesNear(const RigidBody<dim>& body, double reach, const BlockSort<dim>& sort,
-                          const Grid<dim>& grid, Fn&& fn) const;
+    void forParticlesNear(const RigidBody<dim>& body, const Particles<dim>& p, double reach,
+                          const BlockSort<dim>& sort, const Grid<dim>& grid, Fn&& fn) const;
 
     /// The points the broad phase keeps for `body` (near_, in block order) with their signed
     /// distance phi_ and normal normals_, evaluated in parallel.
