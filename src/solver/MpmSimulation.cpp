@@ -152,13 +152,13 @@ template <int dim> void MpmSimulation<dim>::readRigidBodies() {
                           << grid_.h() << " m; the coupling can go unstable [004 §5.2] — "
                           << "rebuild it with a smaller spacing in surfaceToLevelSetDict\n";
         }
-        const double r = bodies_.back()->shape().boundingRadius();
-        for (int d = 0; d < dim; ++d) {
+        // A moving body starts with its centre in the grid; a fixed one (a terrain, an incline)
+        // may lie anywhere.
+        for (int d = 0; d < dim && bodies_.back()->motion() != Motion::Fixed; ++d) {
             const double x = bodies_.back()->position()[d];
             if (x < grid_.lo()[d] || x > grid_.hi()[d])
-                bd.error("position", "the body's centre lies outside the grid bounds");
+                bd.error("position", "the centre of a moving body lies outside the grid bounds");
         }
-        (void)r;
     }
     dict.checkUnknownKeys();
     if (!bodies_.empty()) coupling_ = std::make_unique<Coupling<dim>>(std::move(laws));
@@ -600,7 +600,7 @@ template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
         // Bodies do not collide with the grid walls: one that has passed through a wall is
         // an error (one leaving through an open face simply flies on).
         const double r = b->shape().boundingRadius();
-        for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
+        for (int f = 0; f < Grid<dim>::NumFaces && b->motion() != Motion::Fixed; ++f) {
             const int a = f / 2;
             const bool beyond = f % 2 == 0 ? b->position()[a] < grid_.lo()[a] - r
                                            : b->position()[a] > grid_.hi()[a] + r;
