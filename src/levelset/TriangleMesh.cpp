@@ -11,6 +11,7 @@
 #include <map>
 #include <stdexcept>
 #include <system_error>
+#include <tuple>
 #include <utility>
 
 namespace mpm::levelset {
@@ -84,8 +85,8 @@ TriangleMesh readTriangleMesh(const std::filesystem::path& file, double scale) {
 
 MeshDiagnostics diagnose(const TriangleMesh& mesh) {
     MeshDiagnostics d;
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(3 * mesh.triangles.size());
+    std::vector<std::tuple<int, int, int>> directed; // (min, max, 1 if it runs min → max)
+    directed.reserve(3 * mesh.triangles.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         const Vec3 n =
@@ -98,21 +99,100 @@ MeshDiagnostics diagnose(const TriangleMesh& mesh) {
         for (int k = 0; k < 3; ++k) {
             const int a = tri[static_cast<std::size_t>(k)];
             const int b = tri[static_cast<std::size_t>((k + 1) % 3)];
-            if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+            if (a != b) directed.emplace_back(std::min(a, b), std::max(a, b), a < b ? 1 : 0);
         }
     }
-    std::sort(edges.begin(), edges.end());
-    for (std::size_t i = 0; i < edges.size();) {
+    std::sort(directed.begin(), directed.end());
+    for (std::size_t i = 0; i < directed.size();) {
         std::size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i])
+        const auto key = [&](std::size_t k) {
+            return std::make_pair(std::get<0>(directed[k]), std::get<1>(directed[k]));
+        };
+        while (j < directed.size() && key(j) == key(i))
             ++j;
         if (j - i == 1)
             ++d.boundaryEdges;
         else if (j - i > 2)
             ++d.nonManifoldEdges;
+        else if (std::get<2>(directed[i]) == std::get<2>(directed[i + 1]))
+            ++d.inconsistentEdges;
         i = j;
     }
     return d;
+}
+
+std::size_t orientOutward(TriangleMesh& mesh) {
+    const std::size_t n = mesh.triangles.size();
+    // Two-triangle edges: (a, b, triangle) sorted, pairs of equal (a, b) are neighbours.
+    std::vector<std::tuple<int, int, std::size_t>> edges;
+    edges.reserve(3 * n);
+    for (std::size_t t = 0; t < n; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const int a = mesh.triangles[t][static_cast<std::size_t>(k)];
+            const int b = mesh.triangles[t][static_cast<std::size_t>((k + 1) % 3)];
+            if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b), t);
+        }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::vector<std::size_t>> neighbours(n);
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
+               std::get<1>(edges[j]) == std::get<1>(edges[i]))
+            ++j;
+        if (j - i == 2) {
+            neighbours[std::get<2>(edges[i])].push_back(std::get<2>(edges[i + 1]));
+            neighbours[std::get<2>(edges[i + 1])].push_back(std::get<2>(edges[i]));
+        }
+        i = j;
+    }
+    // +1 if triangle t runs along a→b.
+    const auto direction = [&](std::size_t t, int a, int b) {
+        const auto& tri = mesh.triangles[t];
+        for (int k = 0; k < 3; ++k)
+            if (tri[static_cast<std::size_t>(k)] == a &&
+                tri[static_cast<std::size_t>((k + 1) % 3)] == b)
+                return 1;
+        return -1;
+    };
+    std::vector<char> seen(n, 0), flipped(n, 0);
+    for (std::size_t seed = 0; seed < n; ++seed) {
+        if (seen[seed]) continue;
+        std::vector<std::size_t> component{seed};
+        seen[seed] = 1;
+        for (std::size_t q = 0; q < component.size(); ++q) {
+            const std::size_t t = component[q];
+            for (const std::size_t u : neighbours[t]) {
+                if (seen[u]) continue;
+                seen[u] = 1;
+                // The shared edge: t and u must run along it in opposite directions.
+                const auto& tt = mesh.triangles[t];
+                for (int k = 0; k < 3; ++k) {
+                    const int a = tt[static_cast<std::size_t>(k)];
+                    const int b = tt[static_cast<std::size_t>((k + 1) % 3)];
+                    const auto& tu = mesh.triangles[u];
+                    const bool shared = (tu[0] == a || tu[1] == a || tu[2] == a) &&
+                                        (tu[0] == b || tu[1] == b || tu[2] == b);
+                    if (!shared || a == b) continue;
+                    if (direction(u, a, b) == 1) {
+                        std::swap(mesh.triangles[u][1], mesh.triangles[u][2]);
+                        flipped[u] ^= 1;
+                    }
+                    break;
+                }
+                component.push_back(u);
+            }
+        }
+        double volume = 0.0; // 6 V = Σ a · (b × c)
+        for (const std::size_t t : component)
+            volume += mesh.vertex(t, 0).dot(mesh.vertex(t, 1).cross(mesh.vertex(t, 2)));
+        if (volume < 0.0) {
+            for (const std::size_t t : component) {
+                std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+                flipped[t] ^= 1;
+            }
+        }
+    }
+    return static_cast<std::size_t>(std::count(flipped.begin(), flipped.end(), 1));
 }
 
 } // namespace mpm::levelset

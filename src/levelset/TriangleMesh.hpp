@@ -32,10 +32,20 @@ struct MeshDiagnostics {
     std::size_t boundaryEdges = 0;       ///< edges of one triangle only: the mesh is open
     std::size_t nonManifoldEdges = 0;    ///< edges shared by more than two triangles
     std::size_t degenerateTriangles = 0; ///< triangles of zero area (repeated or collinear corners)
+    /// Edges whose two triangles run along it in the same direction: their windings disagree.
+    std::size_t inconsistentEdges = 0;
     bool clean() const {
-        return boundaryEdges == 0 && nonManifoldEdges == 0 && degenerateTriangles == 0;
+        return boundaryEdges == 0 && nonManifoldEdges == 0 && degenerateTriangles == 0 &&
+               inconsistentEdges == 0;
     }
 };
+
+/// Make the winding consistent and outward: within each edge-connected component, triangles are
+/// flipped to agree with their neighbours across two-triangle edges (breadth first from the
+/// component's first triangle), then the whole component is flipped if its signed volume is
+/// negative (inward). Returns the number of triangles flipped. Mass properties need this; the
+/// sign of the distance (winding number) does not.
+std::size_t orientOutward(TriangleMesh& mesh);
 
 /// Read a surface with assimp (STL ascii and binary, OBJ, PLY, …): all meshes of the scene are
 /// merged, faces triangulated, identical vertices joined (also across meshes) and every

@@ -40,3 +40,31 @@ rc=0
 grep -q "system/surfaceToLevelSetDict:2" "$work/err" && grep -q "spacng" "$work/err" && [ "$rc" -eq 1 ] ||
     { echo "FAIL: misspelt key not reported (exit $rc)"; cat "$work/err"; exit 1; }
 echo "surfaceToLevelSet: misspelt key reported with file, line and key"
+
+# Inconsistent winding: two facets of the cube turned inward. The sign (winding number) does not
+# mind; the utility warns and reorients them, so the volume and moments stay those of the cube.
+sed -i 's/spacng:/spacing:/' "$c/system/surfaceToLevelSetDict"
+"$py" - "$c/constant/geometry/cube.stl" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+vertex = [i for i, l in enumerate(lines) if l.strip().startswith("vertex")]
+for first in (0, 9):  # facets 1 and 4: swap their second and third vertices
+    a, b = vertex[first + 1], vertex[first + 2]
+    lines[a], lines[b] = lines[b], lines[a]
+open(sys.argv[1], "w").write("\n".join(lines))
+PY
+"$root/bin/surfaceToLevelSet" -case "$c" >"$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+grep -q "inconsistent orientation" "$work/log" ||
+    { echo "FAIL: no warning for inconsistently wound triangles"; cat "$work/log"; exit 1; }
+"$py" - "$c/constant/levelSets/cube.vti" <<'PY'
+import sys, vtk
+r = vtk.vtkXMLImageDataReader(); r.SetFileName(sys.argv[1]); r.Update()
+f = r.GetOutput().GetFieldData()
+vol = f.GetArray("volume").GetValue(0)
+moments = [f.GetArray("principalMoments").GetValue(i) for i in range(3)]
+exact = 1e-3 * 0.1 ** 2 / 6  # unit-density cube of edge 0.1: V a² / 6
+ok = abs(vol / 1e-3 - 1) < 1e-6 and all(abs(m / exact - 1) < 1e-6 for m in moments)
+print(f"surfaceToLevelSet: inconsistent winding warned; volume {vol:.6e}, moments {moments[0]:.4e} "
+      f"(exact {exact:.4e}): {'PASS' if ok else 'FAIL'}")
+sys.exit(0 if ok else 1)
+PY

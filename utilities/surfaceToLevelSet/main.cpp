@@ -74,6 +74,15 @@ void convert(const Case& cs, const Dictionary& dict, const std::string& name, do
         warning() << name << ": " << diag.degenerateTriangles
                   << " degenerate (zero-area) triangles\n";
     }
+    // The winding number does not mind the orientation; the mass properties do.
+    const std::size_t flipped = orientOutward(mesh);
+    if (diag.inconsistentEdges > 0) {
+        warning() << name << ": inconsistent orientation (" << diag.inconsistentEdges
+                  << " edges whose two triangles wind the same way); " << flipped
+                  << " triangles reoriented outward for the mass properties\n";
+    } else if (flipped > 0) {
+        log() << "    " << flipped << " triangles wound inward: reoriented outward\n";
+    }
 
     MassProperties mp;
     try {

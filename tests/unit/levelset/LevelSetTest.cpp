@@ -364,6 +364,28 @@ TEST_F(LevelSetFiles, readStlAndObj) {
     EXPECT_THROW(readTriangleMesh(dir_ / "missing.stl"), std::runtime_error);
 }
 
+/// Triangles wound against their neighbours (and a whole mesh wound inward) are found and
+/// turned outward: the mass properties then equal those of the clean mesh.
+TEST(TriangleMesh, orientOutward) {
+    const TriangleMesh clean = icosphere(1.0, 2);
+    TriangleMesh mixed = clean;
+    for (std::size_t t = 0; t < mixed.triangles.size(); t += 5)
+        std::swap(mixed.triangles[t][1], mixed.triangles[t][2]);
+    EXPECT_GT(diagnose(mixed).inconsistentEdges, 0U);
+    EXPECT_EQ(orientOutward(mixed), (clean.triangles.size() + 4) / 5);
+    EXPECT_EQ(diagnose(mixed).inconsistentEdges, 0U);
+    EXPECT_EQ(mixed.triangles, clean.triangles);
+
+    TriangleMesh inward = clean;
+    for (auto& tri : inward.triangles)
+        std::swap(tri[1], tri[2]);
+    EXPECT_EQ(diagnose(inward).inconsistentEdges, 0U); // consistent, but inward
+    EXPECT_EQ(orientOutward(inward), clean.triangles.size());
+    EXPECT_NEAR(computeMassProperties(inward).volume, computeMassProperties(clean).volume, 1e-12);
+    TriangleMesh same = clean;
+    EXPECT_EQ(orientOutward(same), 0U);
+}
+
 TEST(TriangleMesh, diagnostics) {
     TriangleMesh m = box(Vec3(1, 1, 1));
     EXPECT_TRUE(diagnose(m).clean());
