@@ -17,8 +17,12 @@ roughness. Small field scale: ~10 m of drop, 48 m x 24 m footprint.
 Usage: makeTerrain.py
 """
 import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.environ["MPMFOAM_DIR"], "bin", "tools"))
+from stlFile import write_binary_stl  # noqa: E402
 
 H_SURFACE = 0.5          # surface triangle size h_surface [m]
 
@@ -98,18 +102,6 @@ def terrain_triangles(h):
     return np.concatenate(tris)
 
 
-def write_stl(path, tris):
-    """Binary STL (little endian), normals from the vertex order."""
-    n = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
-    n /= np.linalg.norm(n, axis=1, keepdims=True)
-    rec = np.zeros(len(tris), dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")])
-    rec["n"], rec["v"] = n, tris
-    with open(path, "wb") as f:
-        f.write(b"terrain: makeTerrain.py, debris-flow tutorial [004 5.4]".ljust(80, b" "))
-        f.write(np.uint32(len(tris)).tobytes())
-        f.write(rec.tobytes())
-
-
 def signed_volume(tris):
     return np.einsum("ij,ij->i", tris[:, 0], np.cross(tris[:, 1], tris[:, 2])).sum() / 6.0
 
@@ -135,7 +127,8 @@ if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
     tris = terrain_triangles(H_SURFACE)
     os.makedirs(os.path.join(here, "constant", "geometry"), exist_ok=True)
-    write_stl(os.path.join(here, "constant", "geometry", "terrain.stl"), tris)
+    write_binary_stl(os.path.join(here, "constant", "geometry", "terrain.stl"), tris,
+                     "terrain: makeTerrain.py, debris-flow tutorial [004 5.4]")
     vol = signed_volume(tris)
     assert vol > 0, "terrain solid must be outward oriented"
     print(f"terrain.stl: {len(tris)} triangles, h_surface = {H_SURFACE} m, volume {vol:.1f} m^3, "

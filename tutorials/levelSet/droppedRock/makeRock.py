@@ -14,6 +14,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.environ["MPMFOAM_DIR"], "bin", "tools"))
+from stlFile import write_binary_stl  # noqa: E402
+
 SEMI_AXES = np.array([0.045, 0.030, 0.022])  # m
 LEVELS = 3
 
@@ -57,17 +60,6 @@ def rock():
     return (u * r[:, None]) * SEMI_AXES, f
 
 
-def write_stl(path, tris):
-    n = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
-    n /= np.linalg.norm(n, axis=1, keepdims=True)
-    rec = np.zeros(len(tris), dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")])
-    rec["n"], rec["v"] = n, tris
-    with open(path, "wb") as fh:
-        fh.write(b"rock: makeRock.py, dropped-rock tutorial".ljust(80, b" "))
-        fh.write(np.uint32(len(tris)).tobytes())
-        fh.write(rec.tobytes())
-
-
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "constant", "geometry", "rock.stl")
@@ -76,7 +68,7 @@ if __name__ == "__main__":
     vol = np.einsum("ij,ij->i", tris[:, 0], np.cross(tris[:, 1], tris[:, 2])).sum() / 6.0
     assert vol > 0, "the rock must be outward oriented"
     os.makedirs(os.path.dirname(out), exist_ok=True)
-    write_stl(out, tris)
+    write_binary_stl(out, tris, "rock: makeRock.py, dropped-rock tutorial")
     edge = np.linalg.norm(tris - np.roll(tris, 1, axis=1), axis=2).mean()
     print(f"rock.stl: {len(x)} vertices, {len(f)} triangles, mean edge {1000 * edge:.2f} mm, "
           f"volume {1e6 * vol:.2f} cm^3, extent {np.round(1000 * (x.max(0) - x.min(0)), 1)} mm")

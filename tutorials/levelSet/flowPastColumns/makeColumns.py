@@ -19,6 +19,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.environ["MPMFOAM_DIR"], "bin", "tools"))
+from stlFile import write_binary_stl  # noqa: E402
+
 Z0, Z1 = -0.02, 0.2   # m, bottom and top of the prisms
 
 
@@ -66,20 +69,6 @@ def prism(outline, h):
     return np.array(tris)
 
 
-def normals(tris):
-    n = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
-    return n / np.linalg.norm(n, axis=1)[:, None]
-
-
-def write_stl(path, tris):
-    rec = np.zeros(len(tris), dtype=[("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")])
-    rec["n"], rec["v"] = normals(tris), tris
-    with open(path, "wb") as f:
-        f.write(b"flowPastColumns column".ljust(80, b" "))
-        f.write(np.uint32(len(tris)).tobytes())
-        f.write(rec.tobytes())
-
-
 def mean_edge(tris):
     e = np.round(np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]]), 9)
     e = np.sort(e.view([("x", float), ("y", float), ("z", float)]).reshape(-1, 2), axis=1)
@@ -91,6 +80,6 @@ h = float(sys.argv[1])
 os.makedirs("constant/geometry", exist_ok=True)
 for name, outline in (("pillar", outline_pillar(h)), ("star", outline_star(h))):
     tris = prism(outline, h)
-    write_stl(f"constant/geometry/{name}.stl", tris)
+    write_binary_stl(f"constant/geometry/{name}.stl", tris, "flowPastColumns column")
     print(f"{name}: {len(tris)} triangles, h_surface {h:g} m, mean edge length "
           f"{mean_edge(tris):.4g} m")

@@ -23,10 +23,12 @@ Usage: makeWheel.py [outputDir]   (default constant/geometry)
 """
 import math
 import os
-import struct
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.environ["MPMFOAM_DIR"], "bin", "tools"))
+from stlFile import write_binary_stl  # noqa: E402
 
 R_RIM = 0.20        # m, rim radius (grouser root)
 R_TIP = 0.25        # m, grouser tip radius: outer diameter 0.5 m
@@ -115,16 +117,6 @@ def checkClosed(T):
         sys.exit(f"makeWheel: surface not closed/oriented ({len(bad)} bad edges)")
 
 
-def writeStl(path, T, name):
-    with open(path, "wb") as f:
-        f.write(name.encode().ljust(80, b" "))
-        f.write(struct.pack("<I", len(T)))
-        for t in T:
-            nrm = np.cross(t[1] - t[0], t[2] - t[0])
-            nrm /= np.linalg.norm(nrm)
-            f.write(struct.pack("<12fH", *nrm, *t.ravel(), 0))
-
-
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "constant/geometry"
     os.makedirs(out, exist_ok=True)
@@ -137,7 +129,7 @@ def main():
         T = extrude(profile)
         checkClosed(T)
         V = signedVolume(T)
-        writeStl(os.path.join(out, name + ".stl"), T, name)
+        write_binary_stl(os.path.join(out, name + ".stl"), T, name)
         print(f"makeWheel: {name}.stl: {len(T)} triangles, volume {V:.6f} m3 "
               f"(exact {exact:.6f}, {100 * (V / exact - 1):+.2f} %)")
     print(f"makeWheel: R_rim = {R_RIM} m, R_tip = {R_TIP} m, mean radius {R_MEAN} m, "
