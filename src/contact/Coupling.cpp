@@ -182,7 +182,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
 
 template <int dim>
 void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const Particles<dim>& p,
-                               const BlockSort<dim>& sort, const Grid<dim>& grid) const {
+                               const BlockSort<dim>& sort, const Grid<dim>& grid) {
     near_.clear();
     forParticlesNear(body, p, maxRadius_, sort, grid, [&](Index i) { near_.push_back(i); });
     const Index n = static_cast<Index>(near_.size());

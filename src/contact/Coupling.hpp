@@ -87,12 +87,13 @@ private:
     /// The points the broad phase keeps for `body` (near_, in block order) with their signed
     /// distance phi_ and normal normals_, evaluated in parallel.
     void nearPoints(const RigidBody<dim>& body, const Particles<dim>& p, const BlockSort<dim>& sort,
-                    const Grid<dim>& grid) const;
+                    const Grid<dim>& grid);
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
-    mutable std::vector<Index> near_;
-    mutable std::vector<double> phi_;
-    mutable std::vector<Vec<dim>> normals_, impulses_;
+    std::vector<Index> near_;
+    std::vector<double> phi_;
+    std::vector<Vec<dim>> normals_;
+    mutable std::vector<Vec<dim>> impulses_; ///< enforceGap's impulses, applied in point order
     /// Per body: this step's broad-phase points and their distances at x^n (for enforceGap).
     std::vector<std::vector<Index>> nearOf_;
     std::vector<std::vector<double>> phiOf_;
