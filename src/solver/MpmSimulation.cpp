@@ -120,7 +120,9 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     readRigidBodies();
 
     const Dictionary schemes = cs.read("system/mpmSchemes");
-    usf_ = schemes.getWordOr("stressUpdate", "USL", {"USF", "USL"}) == "USF";
+    const std::string order = schemes.getWordOr("stressUpdate", "USL", {"USF", "USL", "MUSL"});
+    usf_ = order == "USF";
+    musl_ = order == "MUSL";
     damping_ = schemes.getScalarOr("damping", 0.0, Bounds::halfOpen(0.0, 1.0));
     if (schemes.getWordOr("antiLocking", "none", {"none", "fBar"}) == "fBar")
         fBar_ = std::make_unique<FBar<dim>>();
@@ -554,11 +556,13 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
     particleToGrid();
     if (usf_) {
         gridVelocity();
+        transfer_->velocityGradient(particles_, grid_);
         updateStress(dt);
         scatterInternalForce();
     }
     gridUpdate(dt);
     gridToParticle(dt);
+    if (musl_) remapVelocity();
     if (!usf_) updateStress(dt);
     if (withBodies) advanceBodies(dt);
     stepWall_ += wallTime() - t0;
@@ -766,6 +770,36 @@ template <int dim> void MpmSimulation<dim>::gridVelocity() {
     applyBoundaryConditions(false, 0.0);
 }
 
+template <int dim> void MpmSimulation<dim>::remapVelocity() {
+    ScopedTimer timer(times_.p2g);
+    // MUSL: project the updated particle momenta back to the grid with the step's weights
+    // (those of x^n) and take L from that velocity.
+    const IVec<dim> nodes = grid_.nodes();
+    const auto& blocks = activeBlocks_;
+#pragma omp parallel for if (worthThreads(64 * static_cast <Index>(blocks.size()))) schedule(static)
+    for (Index k = 0; k < static_cast<Index>(blocks.size()); ++k) {
+        const IVec<dim> c = grid_.blockCoord(blocks[k]);
+        IVec<dim> lo, hi;
+        for (int d = 0; d < dim; ++d) {
+            lo[d] = c[d] * Grid<dim>::BlockSize;
+            hi[d] = std::min(lo[d] + Grid<dim>::BlockSize, nodes[d]);
+        }
+        IVec<dim> i = lo;
+        while (true) {
+            const Index node = grid_.nodeIndex(i);
+            grid_.mass[node] = 0;
+            grid_.momentum[node].setZero();
+            int d = 0;
+            while (d < dim && ++i[d] >= hi[d])
+                i[d] = lo[d], ++d;
+            if (d == dim) break;
+        }
+    }
+    transfer_->scatter(particles_, grid_, sort_, false);
+    gridVelocity();
+    transfer_->velocityGradient(particles_, grid_);
+}
+
 template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
     ScopedTimer timer(times_.p2g);
     transfer_->scatterForce(particles_, grid_, sort_);
@@ -812,7 +846,7 @@ template <int dim> void MpmSimulation<dim>::gridUpdate(double dt) {
 
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     ScopedTimer timer(times_.g2p);
-    const GatherStats st = transfer_->gather(particles_, grid_, dt, !usf_);
+    const GatherStats st = transfer_->gather(particles_, grid_, dt, !usf_ && !musl_);
     if (coupling_) coupling_->applyLocalForces(particles_, dt);
     lastKinetic_ = st.kineticEnergy;
     if (st.firstNonFinite >= 0) fail("G2P", st.firstNonFinite, "has a velocity that is not finite");

@@ -56,6 +56,7 @@ private:
     void scatterInternalForce();
     void gridUpdate(double dt);
     void gridToParticle(double dt);
+    void remapVelocity();
     void couple(double dt);
     void advanceBodies(double dt);
 
@@ -98,6 +99,7 @@ private:
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
     BlockSort<dim> sort_;
     bool usf_ = false;
+    bool musl_ = false;
     bool hasOpenFace_ = false;
     Index removed_ = 0;
     double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
