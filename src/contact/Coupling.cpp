@@ -72,7 +72,7 @@ void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Particles
 }
 
 template <int dim>
-void Coupling<dim>::computeForces(const Particles<dim>& p, std::vector<double>& slip,
+void Coupling<dim>::computeForces(Particles<dim>& p,
                                   const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                                   const std::vector<double>& wave,
                                   const std::vector<double>& criticalDensity,
@@ -85,6 +85,7 @@ void Coupling<dim>::computeForces(const Particles<dim>& p, std::vector<double>& 
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
+        std::vector<double>& slip = p.scalar(slip_[b]);
         // Narrow phase in parallel over the broad phase's points, kept in their order.
         nearPoints(body, p, sort, grid);
         contacts_.clear();
@@ -191,6 +192,19 @@ void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const Particles<dim>&
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
     for (Index k = 0; k < n; ++k)
         phi_[k] = body.distance(p.x[near_[k]], normals_[k]);
+}
+
+template <int dim>
+void Coupling<dim>::declareState(Particles<dim>& p,
+                                 const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies) {
+    std::size_t coupled = 0;
+    for (const auto& law : laws_)
+        coupled += law != nullptr;
+    slip_.assign(laws_.size(), 0);
+    for (std::size_t b = 0; b < laws_.size(); ++b)
+        if (laws_[b])
+            slip_[b] = p.addScalar(
+                {coupled == 1 ? "contactSlip" : "contactSlip_" + bodies[b]->name()}, 0.0);
 }
 
 template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p) {

@@ -30,6 +30,12 @@ public:
 
     bool empty() const { return laws_.empty(); }
 
+    /// Declare each coupled body's per-point contact slip u_T [004 Eq. 37] in `p`: `contactSlip`
+    /// when one body is coupled, `contactSlip_<body>` for each when several are (a point touching
+    /// two bodies keeps one history with each).
+    void declareState(Particles<dim>& p,
+                      const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies);
+
     /// Record the largest coupling radius of the particles (call after seeding or restart;
     /// V⁰ never changes, removal only lowers it).
     void setParticles(const Particles<dim>& p);
@@ -39,7 +45,7 @@ public:
 
     /// Find contacts and their forces, and add −f and torques to the bodies (after their
     /// clearForces()). `wave[m]` and `criticalDensity[m]` are per material.
-    void computeForces(const Particles<dim>& p, std::vector<double>& slip,
+    void computeForces(Particles<dim>& p,
                        const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                        const std::vector<double>& wave, const std::vector<double>& criticalDensity,
                        const BlockSort<dim>& sort, const Grid<dim>& grid, double dt);
@@ -90,6 +96,7 @@ private:
                     const Grid<dim>& grid);
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
+    std::vector<std::size_t> slip_; ///< per body: handle of its slip field in the particles
     std::vector<Index> near_;
     std::vector<double> phi_;
     std::vector<Vec<dim>> normals_;

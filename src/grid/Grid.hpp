@@ -2,8 +2,10 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
+#include "core/Parallel.hpp"
 #include "core/Types.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -74,10 +76,37 @@ public:
         return true;
     }
 
-    const std::array<FaceCondition, NumFaces>& faces() const { return faces_; }
+    /// Visit every node of the given blocks, x fastest within a block, the blocks in parallel:
+    /// fn(node index). The one loop over grid nodes (clearing, grid velocity, grid update).
+    template <class Fn> void forEachNode(const std::vector<Index>& blocks, Fn&& fn) const {
+        const Index nb = static_cast<Index>(blocks.size());
+#pragma omp parallel for if (worthThreads(64 * nb)) schedule(static)
+        for (Index k = 0; k < nb; ++k) {
+            const IVec<dim> c = blockCoord(blocks[k]);
+            IVec<dim> lo, hi;
+            for (int d = 0; d < dim; ++d) {
+                lo[d] = c[d] * BlockSize;
+                hi[d] = std::min(lo[d] + BlockSize, n_[d]);
+            }
+            IVec<dim> i = lo;
+            while (true) {
+                fn(nodeIndex(i));
+                int d = 0;
+                while (d < dim && ++i[d] >= hi[d])
+                    i[d] = lo[d], ++d;
+                if (d == dim) break;
+            }
+        }
+    }
+
+    const std::array<FaceCondition, NumFaces>& faces() const {
+        return faces_;
+    }
     static std::string faceName(int f);
     /// Nodes on or outside face f (within the ghost layers): the nodes its condition acts on.
-    const std::vector<Index>& faceNodes(int f) const { return faceNodes_[f]; }
+    const std::vector<Index>& faceNodes(int f) const {
+        return faceNodes_[f];
+    }
 
     // Node fields (SoA). vOld is the P2G velocity, v the updated one.
     std::vector<double> mass;

@@ -37,6 +37,10 @@ public:
     /// Largest elastic wave speed at density ρ₀, √(M/ρ₀) [m/s], for the CFL limit.
     virtual double waveSpeed() const = 0;
 
+    /// Declare the per-particle state this model keeps beyond the common fields (Particles::
+    /// addScalar, addTensor, addFlag), keeping the handles; called once before seeding or restart.
+    virtual void declareState(Particles<dim>& /*p*/) {}
+
     /// Set the state of freshly seeded particles with Cauchy stress σ₀ (zero for none).
     virtual void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const = 0;
 

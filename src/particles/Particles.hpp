@@ -4,11 +4,38 @@
 #include "core/Parallel.hpp"
 #include "core/Types.hpp"
 
+#include <cassert>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace mpm {
 
+/// What a particle field is to the rest of the code: its name in the `.vtu` (ParaView), whether a
+/// restart needs it and whether it is written. Values of type double are Float64 with one
+/// component, int and Index Int64 with one, Vec<dim> three (zero-padded in 2D), Mat<dim> and Mat3
+/// nine (2D: zero-padded, or the identity's 1 in zz when `identityPad`).
+struct FieldInfo {
+    std::string name;
+    bool restart = true;      ///< read back on restart (so always written)
+    bool written = true;      ///< written to the time directories' particles.vtu
+    bool identityPad = false; ///< a 2D Mat<dim> written with zz = 1 (a deformation gradient)
+    bool points = false;      ///< the positions: the VTU's points, not a data array
+};
+
+/// Per-particle state a model declares at set-up (a material's σᵉ, plastic strain rate, flag):
+/// one array in the field table, sorted, written and restarted with the others.
+template <class T> struct StateField {
+    FieldInfo info;
+    std::vector<T> data;
+};
+
 /// Material points as a structure of arrays, one array per field (DESIGN §7).
+///
+/// The field table (visitTable) declares every field once — name, type, whether a restart needs
+/// it, whether it is written — and sorting, compaction, VTU writing, restart reading and the
+/// failure snapshot all iterate it; a model adds state with addScalar/addTensor/addFlag and it is
+/// handled like the built-in fields without any other file changing.
 ///
 /// Stress and the elastic left Cauchy–Green tensor are 3×3 in 2D too: 2D scenes are plane
 /// strain, so σ_zz is carried and the return maps work in 3D principal space.
@@ -24,52 +51,123 @@ template <int dim> struct Particles {
     std::vector<double> volume0;       ///< V_p at seeding [m³]
     std::vector<double> volume;        ///< V_p = J V_p⁰ [m³]
     std::vector<double> plasticStrain; ///< accumulated plastic shear strain [-]
-    std::vector<double> slip;          ///< accumulated contact slip u_T [004 Eq. 37] [m]
     std::vector<Index> id;             ///< stable identity, kept across sorting and restart
     std::vector<int> material;         ///< index into the material list
 
+    /// Model state declared at set-up, in order of declaration.
+    std::vector<StateField<double>> scalars;
+    std::vector<StateField<Mat3>> tensors;
+    std::vector<StateField<int>> flags;
+
     std::size_t size() const { return x.size(); }
+
+    /// The field table: `stored(info, array…)` for every stored array (the same array of each of
+    /// `ps`, which share their declared state) and `derived(name, fn)` for every written value
+    /// computed from them (fn(p, i) → double), in the order of the `.vtu`.
+    template <class Stored, class Derived, class P, class... Ps>
+    static void visitTable(Stored&& stored, Derived&& derived, P& p, Ps&... ps) {
+        stored(FieldInfo{"id"}, p.id, ps.id...);
+        stored(FieldInfo{"material"}, p.material, ps.material...);
+        stored(FieldInfo{"velocity"}, p.v, ps.v...);
+        stored(FieldInfo{"stress"}, p.stress, ps.stress...);
+        derived(
+            "pressure", +[](const Particles& q, Index i) { return -q.stress[i].trace() / 3.0; });
+        derived(
+            "density", +[](const Particles& q, Index i) { return q.mass[i] / q.volume[i]; });
+        stored(FieldInfo{"volume"}, p.volume, ps.volume...);
+        stored(FieldInfo{"mass"}, p.mass, ps.mass...);
+        stored(FieldInfo{"plasticStrain"}, p.plasticStrain, ps.plasticStrain...);
+        stored(FieldInfo{"initialVolume"}, p.volume0, ps.volume0...);
+        stored(FieldInfo{"deformationGradient", true, true, true}, p.F, ps.F...);
+        stored(FieldInfo{"elasticLeftCauchyGreen"}, p.be, ps.be...);
+        stored(FieldInfo{"affineVelocity"}, p.C, ps.C...);
+        stored(FieldInfo{"velocityGradient", false, false}, p.L, ps.L...); // recomputed each step
+        stored(FieldInfo{"position", true, true, false, true}, p.x, ps.x...);
+        for (std::size_t k = 0; k < p.scalars.size(); ++k)
+            stored(p.scalars[k].info, p.scalars[k].data, ps.scalars[k].data...);
+        for (std::size_t k = 0; k < p.tensors.size(); ++k)
+            stored(p.tensors[k].info, p.tensors[k].data, ps.tensors[k].data...);
+        for (std::size_t k = 0; k < p.flags.size(); ++k)
+            stored(p.flags[k].info, p.flags[k].data, ps.flags[k].data...);
+    }
+
+    /// Apply `f(info, array)` to every stored array.
+    template <class Fn> void forEachField(Fn&& f) {
+        visitTable(
+            f, [](const char*, auto) {}, *this);
+    }
+    template <class Fn> void forEachField(Fn&& f) const {
+        visitTable(
+            f, [](const char*, auto) {}, *this);
+    }
+    /// Apply `f(array)` to every stored array (sorting, compaction, resizing).
+    template <class Fn> void forEachArray(Fn&& f) {
+        forEachField([&f](const FieldInfo&, auto& a) { f(a); });
+    }
 
     void resize(std::size_t n) {
         forEachArray([n](auto& a) { a.resize(n); });
     }
 
-    /// Apply `f` to every per-particle array (sorting, compaction, resizing).
-    template <class Fn> void forEachArray(Fn&& f) {
-        f(x), f(v), f(C), f(L), f(F), f(be), f(stress);
-        f(mass), f(volume0), f(volume), f(plasticStrain), f(slip), f(id), f(material);
+    /// Declare model state (a no-op returning the existing handle when a field of that name and
+    /// type exists: two materials of one model share it). New entries get `init` on every
+    /// present particle. Returns the handle for scalar()/tensor()/flag().
+    std::size_t addScalar(const FieldInfo& info, double init = 0.0) {
+        return addField(scalars, info, init);
     }
-
-    /// Apply `f(a, b)` to every pair of corresponding arrays of this and `other`.
-    template <class Fn> void forEachArrayPair(Particles& o, Fn&& f) {
-        f(x, o.x), f(v, o.v), f(C, o.C), f(L, o.L), f(F, o.F), f(be, o.be), f(stress, o.stress);
-        f(mass, o.mass), f(volume0, o.volume0), f(volume, o.volume);
-        f(plasticStrain, o.plasticStrain), f(slip, o.slip), f(id, o.id), f(material, o.material);
+    std::size_t addTensor(const FieldInfo& info, const Mat3& init = Mat3::Zero()) {
+        return addField(tensors, info, init);
     }
+    std::size_t addFlag(const FieldInfo& info, int init = 0) { return addField(flags, info, init); }
+    std::vector<double>& scalar(std::size_t h) { return scalars[h].data; }
+    const std::vector<double>& scalar(std::size_t h) const { return scalars[h].data; }
+    std::vector<Mat3>& tensor(std::size_t h) { return tensors[h].data; }
+    const std::vector<Mat3>& tensor(std::size_t h) const { return tensors[h].data; }
+    std::vector<int>& flag(std::size_t h) { return flags[h].data; }
+    const std::vector<int>& flag(std::size_t h) const { return flags[h].data; }
 
-    /// permute() through `scratch`, whose arrays keep their memory between calls (the periodic
-    /// reorder then touches no fresh pages).
-    void permute(const std::vector<Index>& order, Particles& scratch) {
-        const Index n = static_cast<Index>(order.size());
-        forEachArrayPair(scratch, [&order, n](auto& a, auto& b) {
-            b.resize(order.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-            for (Index k = 0; k < n; ++k)
-                b[k] = a[order[k]];
-            a.swap(b);
-        });
+    /// An empty set of particles with the same declared model state (names, no values).
+    Particles emptyLike() const {
+        Particles r;
+        auto infos = [](const auto& from, auto& to) {
+            to.resize(from.size());
+            for (std::size_t k = 0; k < from.size(); ++k)
+                to[k].info = from[k].info;
+        };
+        infos(scalars, r.scalars), infos(tensors, r.tensors), infos(flags, r.flags);
+        return r;
     }
 
     /// Reorder all arrays so that new particle k is old particle order[k] (order may be shorter
-    /// than size(): the particles left out are removed).
+    /// than size(): the particles left out are removed). `scratch` keeps its memory between
+    /// calls (the periodic reorder then touches no fresh pages).
+    void permute(const std::vector<Index>& order, Particles& scratch) {
+        if (scratch.scalars.size() != scalars.size() || scratch.tensors.size() != tensors.size() ||
+            scratch.flags.size() != flags.size())
+            scratch = emptyLike();
+        const Index n = static_cast<Index>(order.size());
+        visitTable(
+            [&order, n](const FieldInfo&, auto& a, auto& b) {
+                b.resize(order.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+                for (Index j = 0; j < n; ++j)
+                    b[j] = a[order[j]];
+                a.swap(b);
+            },
+            [](const char*, auto) {}, *this, scratch);
+    }
     void permute(const std::vector<Index>& order) {
-        forEachArray([&order](auto& a) {
-            std::remove_reference_t<decltype(a)> b(order.size());
-#pragma omp parallel for if (worthThreads(static_cast <Index>(order.size()))) schedule(static)
-            for (Index k = 0; k < static_cast<Index>(order.size()); ++k)
-                b[k] = a[order[k]];
-            a.swap(b);
-        });
+        Particles scratch = emptyLike();
+        permute(order, scratch);
+    }
+
+private:
+    template <class T>
+    std::size_t addField(std::vector<StateField<T>>& fields, const FieldInfo& info, const T& init) {
+        for (std::size_t k = 0; k < fields.size(); ++k)
+            if (fields[k].info.name == info.name) return k;
+        fields.push_back({info, std::vector<T>(size(), init)});
+        return fields.size() - 1;
     }
 };
 

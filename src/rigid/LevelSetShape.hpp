@@ -50,6 +50,7 @@ public:
         return true;
     }
 
+    double samplingSpacing() const override { return ls_.grid.spacing; }
     const levelset::LevelSet& levelSet() const { return ls_; }
     /// Lower and upper corners of the grid box.
     const Vec3& gridMin() const { return lo_; }

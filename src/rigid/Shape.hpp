@@ -35,6 +35,21 @@ public:
     /// False (the default) for shapes without a source frame; a body of such a shape must give
     /// its position.
     virtual bool meshPose(Vec<dim>& /*centroid*/, Mat<dim>& /*rotation*/) const { return false; }
+    /// What body–body contact needs of the shape: probes in the body frame, each a point and a
+    /// radius, such that the shape is the union of the balls B(point, radius) near its surface.
+    /// The default is its output surface's vertices with radius 0 (a polyhedron's corners, a
+    /// level set's marching-tetrahedra vertices); a ball answers its centre and its radius.
+    virtual void contactProbes(std::vector<Vec<dim>>& points, std::vector<double>& radii) const {
+        std::vector<Vec3> pts;
+        std::vector<std::vector<int>> cells;
+        surface(pts, cells);
+        points.resize(pts.size());
+        radii.assign(pts.size(), 0.0);
+        for (std::size_t k = 0; k < pts.size(); ++k)
+            points[k] = pts[k].template head<dim>();
+    }
+    /// Spacing of the sampled field behind distance() [m]; 0 for an exact (analytic) shape.
+    virtual double samplingSpacing() const { return 0.0; }
 
     /// Build the shape named by `type:` (sphere, disk, box, …).
     static std::unique_ptr<Shape> create(const Dictionary& dict);

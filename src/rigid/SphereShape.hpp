@@ -24,6 +24,11 @@ public:
     /// 3D: UV sphere of 24 longitudes × 12 latitude bands (528 triangles); 2D: circle of 64
     /// segments. Points lie on the exact surface.
     void surface(std::vector<Vec3>& points, std::vector<std::vector<int>>& cells) const override;
+    /// The centre with the radius: contact with a ball is exact.
+    void contactProbes(std::vector<Vec<dim>>& points, std::vector<double>& radii) const override {
+        points.assign(1, Vec<dim>::Zero());
+        radii.assign(1, radius_);
+    }
 
 private:
     double radius_ = 0.0;

@@ -5,13 +5,18 @@
 #include "case/Time.hpp"
 #include "contact/Coupling.hpp"
 #include "grid/Grid.hpp"
-#include "io/PvdIndex.hpp"
+#include "io/TimeDirectory.hpp"
 #include "materials/Material.hpp"
 #include "monitors/FunctionObject.hpp"
 #include "particles/BlockSort.hpp"
+#include "particles/ParticleSeeder.hpp"
 #include "particles/Particles.hpp"
-#include "rigid/RigidBody.hpp"
+#include "rigid/BodySet.hpp"
+#include "solver/LastGoodState.hpp"
+#include "solver/PhaseTimer.hpp"
 #include "solver/Simulation.hpp"
+#include "solver/State.hpp"
+#include "solver/StressUpdateOrder.hpp"
 #include "transfers/FBar.hpp"
 #include "transfers/Transfer.hpp"
 
@@ -21,14 +26,8 @@
 
 namespace mpm {
 
-/// Wall time spent in each phase of the step [s].
-struct PhaseTimes {
-    double sort = 0, contact = 0, p2g = 0, grid = 0, g2p = 0, constitutive = 0, bodies = 0, io = 0,
-           functions = 0;
-};
-
 /// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of DESIGN §4.
-template <int dim> class MpmSimulation final : public Simulation {
+template <int dim> class MpmSimulation final : public Simulation, private StressPhases {
 public:
     MpmSimulation(const Case& cs, const RunOptions& options, const Dictionary& gridDict);
 
@@ -48,38 +47,45 @@ private:
     static constexpr long ReorderInterval = 20;
 
     // Phases of a step.
-    void sortParticles();
+    void sortAndComputeWeights();
     void removeOutflow();
+    void computeCouplingForces(double dt);
     void particleToGrid();
-    void gridVelocity();
-    void updateStress(double dt);
-    void scatterInternalForce();
-    void gridUpdate(double dt);
+    void updateGridVelocity(double dt);
     void gridToParticle(double dt);
-    void remapVelocity();
-    void couple(double dt);
     void advanceBodies(double dt);
+    void pushPointsOutOfBodies(double dt);
+    void checkBodies();
+    bool gradientSeen() const; ///< debug invariant of the stress update
+    // Phases a stress-update order places (StressPhases).
+    void gridVelocityFromMomentum() override;
+    void velocityGradient() override;
+    void updateStress(double dt) override;
+    void scatterInternalForce() override;
+    void remapMomentum() override;
 
-    // Set-up.
-    void readRigidBodies();
-    void gravityPreload();
-    double gimpHalfWidth() const;
-    void seed();
-    void restart(const std::string& timeDir);
-    void buildMaterialLists();
-    void checkDeltaT() const;
     void applyBoundaryConditions(bool recordReactions, double dt);
 
+    // Set-up.
+    void gravityPreload();
+    double gimpHalfWidth() const;
+    void buildMaterialLists();
+    double criticalDeltaT() const;
+    void checkDeltaT() const;
+    double energyBudget() const;
+    double maxSpeed() const;
+
     // Failure handling: keep a recent good state and write it before stopping.
-    void snapshot();
+    void snapshot() { good_.save(particles_, bodies_, *time_); }
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
+    Index fastestParticle() const;
     State<dim> state() const {
         return {particles_,
                 grid_,
                 materials_,
                 gravity_,
                 reactions_,
-                bodies_,
+                bodies_.bodies(),
                 coupling_ ? coupling_->minimumGapSeen() : 1e300,
                 coupling_ ? coupling_->numContacts() : 0};
     }
@@ -93,49 +99,34 @@ private:
     Particles<dim> particles_;
     Particles<dim> scratch_; ///< reorder buffers, kept between reorders
     std::vector<std::unique_ptr<Material<dim>>> materials_;
-    std::vector<std::string> materialNames_;
     std::vector<std::vector<Index>> materialParticles_;
     std::unique_ptr<Transfer<dim>> transfer_;
+    std::unique_ptr<StressUpdateOrder> order_;
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
     BlockSort<dim> sort_;
-    bool usf_ = false;
-    bool musl_ = false;
+    std::vector<Index> activeBlocks_;
     bool hasOpenFace_ = false;
     Index removed_ = 0;
     double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
-    /// Gravity preload stage [000 §4.2] (`initialStress: gravityPreload` in constant/particles).
-    struct Preload {
-        bool requested = false;
-        double damping = 0.5;    ///< local damping during the preload
-        double tolerance = 1e-4; ///< stop when E_k ≤ tolerance · peak E_k
-        long maxSteps = 20000;
-    } preload_;
+    PreloadSettings preload_;
     bool preloading_ = false;
     long preloadIndex_ = 0;
     double lastKinetic_ = 0;
-    std::vector<Index> activeBlocks_;
     std::vector<char> touched_; ///< face nodes already given a reaction this step
     std::array<Vec<dim>, 2 * dim> reactions_;
-    std::vector<std::unique_ptr<RigidBody<dim>>> bodies_;
+    BodySet<dim> bodies_;
     std::unique_ptr<Coupling<dim>> coupling_;
     std::vector<double> waveOf_, criticalDensityOf_; ///< per material
     std::vector<std::unique_ptr<FunctionObject<dim>>> functions_;
-    std::unique_ptr<io::PvdIndex> pvd_, bodiesPvd_;
+    io::TimeDirectoryWriter writer_;
 
     double maxSpeed_ = 0;
     double maxMoveSpeed_ = 0; ///< largest grid (PIC) speed a point moved with in the last G2P
     double maxWaveSpeed_ = 0;
     double lightestMass_ = 1e300;
     double energyBudget_ = 1e300;
-    long steps_ = 0;
-    double stepWall_ = 0;
-    PhaseTimes times_;
-
-    Particles<dim> good_;
-    std::vector<std::string> goodBodies_; ///< body states at the snapshot (writeState text)
-    double goodTime_ = 0, goodDeltaT_ = 0;
-    long goodIndex_ = 0;
-    bool hasGood_ = false;
+    PhaseTimer timer_;
+    LastGoodState<dim> good_;
 };
 
 } // namespace mpm

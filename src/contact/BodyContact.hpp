@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Dictionary.hpp"
+#include "core/Registry.hpp"
+#include "rigid/RigidBody.hpp"
+
+#include <array>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace mpm {
+
+/// Tangential spring displacement of every touching (prober body, target body, probe) triple
+/// [m] — the history a frictional contact keeps between steps and across a restart.
+template <int dim> using ContactHistory = std::map<std::array<int, 3>, Vec<dim>>;
+
+/// Contact between rigid bodies (constant/bodyContact, `type:`): the body–body phase of the step,
+/// which seed 001's spheropolygon DEM fills with its own geometry.
+///
+/// Narrow phase through the shapes' contact probes (Shape::contactProbes): of a pair, the body
+/// with fewer probes probes the other's signed distance φ. A probe (x, r) touches when
+/// δ = r − φ(x) > 0; the normal n = ∇φ points out of the target, the contact point is
+/// c = x − (r − δ/2) n. A ball probes with its centre and radius, so contact with a ball is
+/// exact. Pairs are found by bounding spheres (O(N²): the DEM issue brings neighbour lists).
+template <int dim> class BodyContactLaw {
+public:
+    using BodyList = std::vector<std::unique_ptr<RigidBody<dim>>>;
+
+    virtual ~BodyContactLaw() = default;
+
+    /// Add the contact forces and torques of every touching pair to the bodies over a step dt,
+    /// advancing `history` (entries of probes that separated are dropped).
+    virtual void addForces(BodyList& bodies, ContactHistory<dim>& history, double dt) = 0;
+    /// The stable step of this law for these bodies [s].
+    virtual double stableDeltaT(const BodyList& bodies) const = 0;
+
+    /// Build the law named by `type:` (linearSpring).
+    static std::unique_ptr<BodyContactLaw> create(const Dictionary& dict);
+};
+
+template <int dim> using BodyContactRegistry = Registry<BodyContactLaw<dim>>;
+
+/// One probe–target contact of a step (world frame).
+template <int dim> struct ProbeContact {
+    int prober, target, probe;
+    double overlap;  ///< δ > 0 [m]
+    Vec<dim> normal; ///< out of the target
+    Vec<dim> point;  ///< c
+};
+
+/// Every touching probe of every pair i < j of `bodies` (fixed pairs skipped), in a fixed order.
+template <int dim>
+void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
+                       std::vector<ProbeContact<dim>>& contacts);
+
+} // namespace mpm

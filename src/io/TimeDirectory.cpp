@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "io/TimeDirectory.hpp"
+
+#include "core/Error.hpp"
+#include "io/ParticleIO.hpp"
+
+namespace mpm::io {
+
+namespace fs = std::filesystem;
+
+TimeDirectoryWriter::TimeDirectoryWriter(const Case& cs, std::vector<std::string> indices)
+    : case_(cs), names_(std::move(indices)), pvd_(names_.size()) {}
+
+void TimeDirectoryWriter::write(Time& time, const std::function<void(const fs::path&)>& fill,
+                                const std::vector<std::string>& files) {
+    const std::string name = time.name();
+    const fs::path dir = case_.path(name);
+    const fs::path tmp = case_.path("." + name + ".writing");
+    fs::remove_all(tmp);
+    fs::create_directories(tmp);
+    fill(tmp);
+    time.writeTimeDict(tmp);
+    fs::remove_all(dir);
+    fs::rename(tmp, dir);
+
+    for (std::size_t k = 0; k < names_.size(); ++k) {
+        if (!pvd_[k])
+            pvd_[k] = std::make_unique<PvdIndex>(case_.path(names_[k] + ".pvd"), time.value());
+        pvd_[k]->add(time.value(), name + "/" + files[k]);
+    }
+    for (const std::string& old : time.wrote()) {
+        fs::remove_all(case_.path(old));
+        for (std::size_t k = 0; k < names_.size(); ++k)
+            pvd_[k]->remove(old + "/" + files[k]);
+    }
+}
+
+template <int dim>
+void readParticles(const Case& cs, const std::string& timeDir, Particles<dim>& p,
+                   std::size_t numMaterials) {
+    const std::string file = timeDir + "/particles.vtu";
+    PointCloud cloud;
+    try {
+        cloud = readVtu(cs.path(file));
+    } catch (const std::exception& e) {
+        throw InputError(file, 0, "", e.what());
+    }
+    fromPointCloud(cloud, p, file);
+    for (const int m : p.material)
+        if (m < 0 || m >= static_cast<int>(numMaterials))
+            throw InputError(file, 0, "material",
+                             "material index " + std::to_string(m) +
+                                 " is not defined in constant/materials");
+}
+
+template void readParticles(const Case&, const std::string&, Particles<2>&, std::size_t);
+template void readParticles(const Case&, const std::string&, Particles<3>&, std::size_t);
+
+} // namespace mpm::io

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Case.hpp"
+#include "case/Time.hpp"
+#include "io/PvdIndex.hpp"
+#include "particles/Particles.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm::io {
+
+/// Writes a run's time directories — `<time>/particles.vtu`, `<time>/uniform/time` and what
+/// else the caller adds — never half-written (a temporary folder renamed into place), indexes
+/// them in the case's `.pvd` files for ParaView and purges the old ones (purgeWrite).
+class TimeDirectoryWriter {
+public:
+    /// `indices`: the ParaView series, e.g. {"particles", "rigidBodies"}: `<case>/<name>.pvd`
+    /// indexing `<time>/<name>.vtu|.vtp` (the extension is the file's own, given in write()).
+    TimeDirectoryWriter(const Case& cs, std::vector<std::string> indices);
+
+    /// Write the current time of `time`: `fill(folder)` writes every file into `folder`;
+    /// `files[k]` is the file of series k inside the time directory (e.g. "particles.vtu").
+    void write(Time& time, const std::function<void(const std::filesystem::path&)>& fill,
+               const std::vector<std::string>& files);
+
+private:
+    const Case& case_;
+    std::vector<std::string> names_;
+    std::vector<std::unique_ptr<PvdIndex>> pvd_;
+};
+
+/// Read the particles of time directory `timeDir` (its particles.vtu) for a restart into `p`,
+/// whose model state is declared; every restart field must be present and every material index
+/// below `numMaterials` (InputError naming the file otherwise).
+template <int dim>
+void readParticles(const Case& cs, const std::string& timeDir, Particles<dim>& p,
+                   std::size_t numMaterials);
+
+} // namespace mpm::io

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "case/Dictionary.hpp"
+#include "grid/Grid.hpp"
+#include "materials/Material.hpp"
+#include "particles/Particles.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace mpm {
+
+/// Gravity preload stage [000 §4.2] (`initialStress: {type: gravityPreload, …}` of a set).
+struct PreloadSettings {
+    bool requested = false;
+    double damping = 0.5;    ///< local damping during the preload
+    double tolerance = 1e-4; ///< stop when E_k ≤ tolerance · peak E_k
+    long maxSteps = 20000;
+};
+
+/// Seeds the particle sets of constant/particles: each set's region (regular or Poisson-disk
+/// seeding), material, initial velocity (a vector, `{type: uniform, value}` or an axial mode
+/// `{type: axialMode, amplitude, direction, origin, length, mode}`) and initial stress (none,
+/// geostatic σ_v = −ρ|g|(z_s − z), σ_h = K0 σ_v, or a gravity preload run by the solver).
+template <int dim> class ParticleSeeder {
+public:
+    ParticleSeeder(const Grid<dim>& grid,
+                   const std::vector<std::unique_ptr<Material<dim>>>& materials,
+                   const Vec<dim>& gravity)
+        : grid_(grid), materials_(materials), gravity_(gravity) {}
+
+    /// Append the particles of every set of `sets` (constant/particles) to `particles`, whose
+    /// model state is declared; materials initialise their points.
+    void seed(const Dictionary& sets, Particles<dim>& particles);
+
+    /// The gravity preload a set asked for (requested = false if none).
+    const PreloadSettings& preload() const { return preload_; }
+
+private:
+    const Grid<dim>& grid_;
+    const std::vector<std::unique_ptr<Material<dim>>>& materials_;
+    Vec<dim> gravity_;
+    PreloadSettings preload_;
+};
+
+} // namespace mpm

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "contact/BodyContact.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace mpm;
+
+template <int dim> using Bodies = std::vector<std::unique_ptr<RigidBody<dim>>>;
+
+template <int dim> std::unique_ptr<RigidBody<dim>> body(const std::string& yaml) {
+    return std::make_unique<RigidBody<dim>>(Dictionary::fromString(yaml, "test"), "b");
+}
+
+template <int dim> std::unique_ptr<BodyContactLaw<dim>> law(const std::string& yaml) {
+    return BodyContactLaw<dim>::create(Dictionary::fromString(yaml, "test"));
+}
+
+/// One step of the body phase: forces from contact only, then every body advances.
+template <int dim>
+void stepBodies(Bodies<dim>& b, BodyContactLaw<dim>& l, ContactHistory<dim>& h, double dt,
+                double t) {
+    for (auto& x : b)
+        x->clearForces();
+    l.addForces(b, h, dt);
+    for (auto& x : b)
+        x->advance(dt, t, Vec<dim>::Zero());
+}
+
+template <int dim> double kinetic(const Bodies<dim>& b) {
+    double e = 0;
+    for (const auto& x : b)
+        e += x->kineticEnergy();
+    return e;
+}
+
+/// Energy lost by a frictionless elastic head-on collision of two balls with step dt.
+double collisionEnergyError(double dt) {
+    Bodies<3> b;
+    b.push_back(body<3>("{shape: {type: sphere, radius: 0.1}, density: 1000, position: [0, 0, 0], "
+                        "velocity: [1, 0, 0]}"));
+    b.push_back(body<3>("{shape: {type: sphere, radius: 0.05}, density: 1000, "
+                        "position: [0.16, 0.01, 0], velocity: [-1, 0, 0]}"));
+    auto l = law<3>("{type: linearSpring, normalStiffness: 1e5}");
+    ContactHistory<3> h;
+    const double e0 = kinetic(b);
+    const Vec<3> p0 = b[0]->mass() * b[0]->velocity() + b[1]->mass() * b[1]->velocity();
+    for (int k = 0; k * dt < 0.1; ++k) {
+        stepBodies(b, *l, h, dt, k * dt);
+        const Vec<3> p = b[0]->mass() * b[0]->velocity() + b[1]->mass() * b[1]->velocity();
+        EXPECT_LT((p - p0).norm(), 1e-12 * p0.norm()) << "momentum at step " << k;
+    }
+    EXPECT_TRUE(h.empty()); // separated: no history left
+    return std::fabs(kinetic(b) - e0) / e0;
+}
+
+TEST(BodyContactTest, FrictionlessElasticCollisionKeepsMomentumAndEnergyToSecondOrder) {
+    const double coarse = collisionEnergyError(2e-4);
+    const double fine = collisionEnergyError(1e-4);
+    EXPECT_LT(coarse, 1e-2);
+    EXPECT_GT(coarse / std::max(fine, 1e-300), 3.0) << coarse << " " << fine; // O(Δt²)
+}
+
+TEST(BodyContactTest, ActionEqualsReactionForcesAndTorques) {
+    Bodies<3> b;
+    b.push_back(body<3>("{shape: {type: box, halfExtents: [0.1, 0.05, 0.08]}, density: 2000, "
+                        "position: [0, 0, 0], orientation: {axis: [1, 2, 3], angle: 25}}"));
+    b.push_back(body<3>("{shape: {type: sphere, radius: 0.05}, density: 1000, "
+                        "position: [0.02, 0.09, 0.01], velocity: [0.3, -0.2, 0.1]}"));
+    auto l = law<3>("{type: linearSpring, normalStiffness: 1e5, friction: 0.5}");
+    ContactHistory<3> h;
+    for (auto& x : b)
+        x->clearForces();
+    l->addForces(b, h, 1e-4);
+    l->addForces(b, h, 1e-4); // a second pass with history
+    ASSERT_FALSE(h.empty());
+    const Vec<3> f = b[0]->force() + b[1]->force();
+    EXPECT_LT(f.norm(), 1e-12 * b[0]->force().norm());
+    // Angular momentum about the origin: Σ x_b × F_b + τ_b = 0.
+    Vec<3> L = Vec<3>::Zero();
+    for (const auto& x : b)
+        L += x->position().cross(x->force()) + x->torque();
+    EXPECT_LT(L.norm(), 1e-12 * b[0]->force().norm());
+}
+
+TEST(BodyContactTest, SlidingFrictionIsMuTimesNormalForceAgainstTheMotion) {
+    Bodies<2> b;
+    b.push_back(body<2>("{shape: {type: box, halfExtents: [1, 0.1]}, mass: 1, motion: fixed, "
+                        "position: [0, 0]}"));
+    b.push_back(body<2>("{shape: {type: disk, radius: 0.05}, density: 1000, "
+                        "position: [0, 0.149], velocity: [2, 0]}"));
+    auto l = law<2>("{type: linearSpring, normalStiffness: 1e4, friction: 0.3}");
+    ContactHistory<2> h;
+    for (int k = 0; k < 3; ++k) {
+        for (auto& x : b)
+            x->clearForces();
+        l->addForces(b, h, 1e-3);
+    }
+    const Vec<2> f = b[1]->force();
+    EXPECT_NEAR(f[1], 1e4 * 0.001, 1e-9);  // k_n δ
+    EXPECT_NEAR(f[0], -0.3 * f[1], 1e-12); // μ f_n, against +x
+    EXPECT_EQ(h.size(), 1u);
+}
+
+TEST(BodyContactTest, RestitutionDashpotDissipates) {
+    auto bounce = [](const std::string& extra) {
+        Bodies<2> b;
+        b.push_back(body<2>("{shape: {type: disk, radius: 0.1}, density: 1000, position: [0, 0], "
+                            "velocity: [1, 0]}"));
+        b.push_back(body<2>("{shape: {type: disk, radius: 0.1}, density: 1000, "
+                            "position: [0.21, 0], velocity: [-1, 0]}"));
+        auto l = law<2>("{type: linearSpring, normalStiffness: 1e5" + extra + "}");
+        ContactHistory<2> h;
+        for (int k = 0; k < 10000; ++k)
+            stepBodies(b, *l, h, 1e-5, k * 1e-5);
+        return b[1]->velocity()[0] - b[0]->velocity()[0]; // separation speed
+    };
+    EXPECT_NEAR(bounce(""), 2.0, 2e-3);
+    EXPECT_NEAR(bounce(", restitution: 0.5"), 1.0, 5e-3); // e = v_out / v_in
+    EXPECT_NEAR(bounce(", restitution: 0.2"), 0.4, 5e-3); // the ζ > 1/√2 branch
+    EXPECT_NEAR(bounce(", restitution: 0.9"), 1.8, 5e-3);
+}
+
+TEST(BodyContactTest, RestitutionBelowTheUnderdampedLimitIsAnInputError) {
+    EXPECT_THROW(law<2>("{type: linearSpring, normalStiffness: 1e5, restitution: 0.1}"),
+                 InputError);
+}
+
+TEST(BodyContactTest, UnknownTypeListsTheValidOnes) {
+    try {
+        law<2>("{type: hertz}");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("linearSpring"), std::string::npos);
+    }
+}
+
+} // namespace
