@@ -108,7 +108,7 @@ TEST(DruckerPrager, FrictionCoefficientEq8) {
 
 TEST(DruckerPrager, CreateAndDefaults) {
     const auto m = create<3>();
-    const auto& dp = dynamic_cast<const DruckerPrager<3>&>(*m);
+    const auto& dp = dynamic_cast<const DruckerPrager<3>&>(*m).plasticity();
     EXPECT_EQ(m->name(), "sand");
     EXPECT_DOUBLE_EQ(m->density(), 1600.0);
     EXPECT_DOUBLE_EQ(m->criticalDensity(), 1600.0); // ρ_c = initial density [000 §3.1]
@@ -122,8 +122,8 @@ TEST(DruckerPrager, CreateAndDefaults) {
     EXPECT_EQ(create<2>("transPhase: false\n")->criticalDensity(), 0.0);
     EXPECT_EQ(create<2>("transPhase: no\ncriticalDensity: 1500\n")->criticalDensity(), 0.0);
     const auto dil = create<3>("dilationAngle: 10\n");
-    EXPECT_NEAR(dynamic_cast<const DruckerPrager<3>&>(*dil).dilatancy(), frictionCoefficient(10),
-                1e-15);
+    EXPECT_NEAR(dynamic_cast<const DruckerPrager<3>&>(*dil).plasticity().dilatancy(),
+                frictionCoefficient(10), 1e-15);
     // Hencky elastic materials never gasify.
     EXPECT_EQ(Material<3>::create(parse("type: henckyElastic\ndensity: 1\nE: 1\nnu: 0\n"), "m")
                   ->criticalDensity(),
@@ -195,7 +195,7 @@ template <int dim> void checkReturn(double psi, unsigned seed) {
         SCOPED_TRACE(i);
         const double jInv = p.volume0[i] / p.volume[i];
         double pt, qt, pn, qn;
-        invariants(HenckyElastic<3>::kirchhoff(c, before.be[i]), pt, qt);
+        invariants(HenckyLaw::kirchhoff(c, before.be[i]), pt, qt);
         invariants(p.stress[i], pn, qn);
         ASSERT_GT(qt, mu * pt);
         EXPECT_NEAR(qn, mu * pn, 1e-10 * mu * pn);
@@ -211,10 +211,10 @@ template <int dim> void checkReturn(double psi, unsigned seed) {
             EXPECT_NEAR(p.be[i].determinant(), before.be[i].determinant(), 1e-13);
         }
         // The stored bᵉ gives the stored stress.
-        const Mat3 sigma = HenckyElastic<3>::kirchhoff(c, p.be[i]) * jInv;
+        const Mat3 sigma = HenckyLaw::kirchhoff(c, p.be[i]) * jInv;
         EXPECT_LE((sigma - p.stress[i]).norm(), 1e-9 * p.stress[i].norm());
         // Coaxial return: the deviator keeps its direction.
-        const Mat3 tauTrial = HenckyElastic<3>::kirchhoff(c, before.be[i]);
+        const Mat3 tauTrial = HenckyLaw::kirchhoff(c, before.be[i]);
         const Mat3 sOld = tauTrial + pt * Mat3::Identity();
         const Mat3 sNew = p.stress[i] + pn * Mat3::Identity();
         EXPECT_LE((sNew / sNew.norm() - sOld / sOld.norm()).norm(), 1e-9);
@@ -430,8 +430,8 @@ TEST(DruckerPrager, InitialiseAndStrainEnergy) {
     m->initialise(p, 1, Mat3::Zero());
     EXPECT_EQ(p.stress[0], sigma0);
     EXPECT_EQ(p.be[1], Mat3::Identity());
-    EXPECT_LE((HenckyElastic<3>::kirchhoff(c, p.be[0]) - sigma0).norm(), 1e-9 * sigma0.norm());
-    EXPECT_NEAR(m->strainEnergy(p, 0), HenckyElastic<3>::energyDensity(c, p.be[0]) * 1e-3, 1e-15);
+    EXPECT_LE((HenckyLaw::kirchhoff(c, p.be[0]) - sigma0).norm(), 1e-9 * sigma0.norm());
+    EXPECT_NEAR(m->strainEnergy(p, 0), HenckyLaw::energyDensity(c, p.be[0]) * 1e-3, 1e-15);
     EXPECT_EQ(m->strainEnergy(p, 1), 0.0);
 }
 
