@@ -37,9 +37,17 @@
 // Drucker–Prager consistency q_tr − G Δγ = μ (p_tr + K β Δγ) gives Δγ = F_tr / (G + μ K β), and
 // the returned pressure
 //   p = p_tr + K β Δγ = (G p_tr + K β q_tr) / (G + μ K β).
-// From a compressive trial (p_tr > 0) the return keeps p > 0 and |ε̂| ≥ 0 (Δγ < q_tr/G since
-// (q_tr − μ p_tr) G < q_tr (G + μ K β)), so it never passes the apex: only a tensile trial
-// (ε_v ≥ 0, p ≤ 0) goes there (cohesionless: zero stress, bᵉ = 1, plastic strain += √2 |ε̂_tr|).
+// Apex region. The return moves the trial along the fixed direction (K β, −G) in the (p, q)
+// plane, the normal of the potential in the elastic metric; the trials it brings to the apex
+// lie on the line through the apex along that direction, G p_tr + K β q_tr = 0. A trial on the
+// cone side of it (G p_tr + K β q_tr > 0, i.e. q_tr/G > −p_tr/(K β)) returns onto the cone
+// with p ≥ 0 — also a tensile trial (p_tr < 0) with enough shear when ψ > 0; a trial on the
+// other side (or on it) returns to the apex: zero stress, bᵉ = 1 (cohesionless), plastic strain
+// += q_tr/G = √2 |ε̂_tr| (the shear part of the corner return). In Hencky strain
+// (p_tr = −K ε_v, q_tr = √2 G |ε̂|) the apex region is
+//   ε_v ≥ √2 β |ε̂_tr|,
+// which for ψ = 0 (β = 0) is exactly ε_v ≥ 0: the hydrostatic axis. μ(I) flows are isochoric
+// (β = 0), so theirs is ε_v ≥ 0 too.
 //
 // Trans-phase relation [000 Eq. 10]: when ρ_p = m_p/V_p < ρ_c [000 Eq. 18] the point is
 // gasified: zero stress and bᵉ = 1 (it starts stress-free when it re-compacts); its plastic
@@ -94,7 +102,8 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
             const double dg = m > 0.0 ? m : 0.0;
             const bool plastic = dg > 0.0;
             const bool gas = rho[l] < rhoC;
-            const bool stressFree = gas | (ev >= 0.0);
+            // Apex region ε_v ≥ √2 β |ε̂_tr| (see above; ε_v ≥ 0 for β = 0).
+            const bool stressFree = gas | (ev >= sqrt2 * flow.beta * dn);
             // ε = ε_v/3 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
             const double ratio = 1.0 - dg / (sqrt2 * (dn > 1e-300 ? dn : 1e-300));
             const double evNewThird = (ev - flow.beta * dg) / 3.0;
