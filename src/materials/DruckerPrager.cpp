@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/DruckerPrager.hpp"
 
+#include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace mpm {
 
@@ -26,8 +28,7 @@ DruckerPragerPlasticity::DruckerPragerPlasticity(const Dictionary& dict, const E
       flow_{coneFriction(fit_, phi_), coneFriction(fit_, psi_), c.G, c.K} {
     if (law == ElasticLaw::hencky && cohesion_ > 0.0)
         dict.error("cohesion", "cohesion > 0 needs 'elasticity: hypoelastic' (the Hencky return "
-                               "map is cohesionless); got " +
-                                   std::to_string(cohesion_));
+                               "map is cohesionless)");
     flow_.k = fit_ == ConeFit::compression ? mpm::cohesionCoefficient(cohesion_, phi_)
                                            : planeStrainCohesionCoefficient(cohesion_, phi_);
     // The apex of the shear cone, σ_m = k/μ = c/tan φ: the largest meaningful cut-off.

@@ -447,7 +447,7 @@ TEST(HypoelasticDruckerPrager, GasifiedPointsCarryNoStress) {
     Particles<3> p = makeParticles<3>(6);
     for (int i = 0; i < 6; ++i) {
         p.stress[i] = randomStress<3>(rng, -1e4, 5e2 * i); // elastic
-        p.volume[i] = i < 3 ? 1.01e-3 : 0.99e-3; // ρ < ρ₀ = ρ_c for i < 3
+        p.volume[i] = i < 3 ? 1.01e-3 : 0.99e-3;           // ρ < ρ₀ = ρ_c for i < 3
         p.plasticStrain[i] = 0.5;
     }
     const Particles<3> before = p;
