@@ -1,25 +1,57 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/DruckerPrager.hpp"
 
+#include <algorithm>
+#include <sstream>
+#include <string>
+
 namespace mpm {
 
-template <int dim>
-DruckerPrager<dim>::DruckerPrager(const Dictionary& dict, const std::string& name)
-    : HenckyGranular<dim>(dict, name),
-      psi_(dict.getScalarOr("dilationAngle", 0.0, Bounds::closed(0.0, this->phi_))),
-      beta_(frictionCoefficient(psi_)) {}
-
-template <int dim>
-Index DruckerPrager<dim>::updateStress(Particles<dim>& p, const std::vector<Index>& ids,
-                                       double dt) const {
-    const DruckerPragerFlow flow{this->muS_, beta_, this->c_.G, this->c_.K};
-    return henckyReturnMapUpdate(p, ids, dt, this->c_, this->rhoC_, flow);
+ConeFit readConeFit(const Dictionary& dict, ElasticLaw law) {
+    const std::string def = law == ElasticLaw::hencky ? "compression" : "planeStrain";
+    return dict.getWordOr("coneFit", def, {"compression", "planeStrain"}) == "compression"
+               ? ConeFit::compression
+               : ConeFit::planeStrain;
 }
 
-template class DruckerPrager<2>;
-template class DruckerPrager<3>;
+double coneFriction(ConeFit fit, double angleDegrees) {
+    return fit == ConeFit::compression ? frictionCoefficient(angleDegrees)
+                                       : planeStrainFrictionCoefficient(angleDegrees);
+}
 
-MPM_REGISTER(MaterialRegistry<2>, DruckerPrager<2>, "druckerPrager");
-MPM_REGISTER(MaterialRegistry<3>, DruckerPrager<3>, "druckerPrager");
+DruckerPragerPlasticity::DruckerPragerPlasticity(const Dictionary& dict, const ElasticConstants& c,
+                                                 ElasticLaw law)
+    : phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
+      fit_(readConeFit(dict, law)),
+      psi_(dict.getScalarOr("dilationAngle", 0.0, Bounds::closed(0.0, phi_))),
+      cohesion_(dict.getScalarOr("cohesion", 0.0, Bounds::nonNegative())),
+      flow_{coneFriction(fit_, phi_), coneFriction(fit_, psi_), c.G, c.K} {
+    if (law == ElasticLaw::hencky && cohesion_ > 0.0)
+        dict.error("cohesion", "cohesion > 0 needs 'elasticity: hypoelastic' (the Hencky return "
+                               "map is cohesionless)");
+    flow_.k = fit_ == ConeFit::compression ? mpm::cohesionCoefficient(cohesion_, phi_)
+                                           : planeStrainCohesionCoefficient(cohesion_, phi_);
+    // The apex of the shear cone, σ_m = k/μ = c/tan φ: the largest meaningful cut-off.
+    const double apex = flow_.k / flow_.mu;
+    cutoff_.sigmaT = dict.getScalarOr("tensionStrength", apex, Bounds::nonNegative());
+    if (cutoff_.sigmaT > apex) {
+        std::ostringstream msg;
+        msg << "expected at most the apex of the shear cone, c/tan φ = " << apex
+            << " Pa (0 without cohesion), got " << cutoff_.sigmaT;
+        dict.error("tensionStrength", msg.str());
+    }
+    cutoff_.tauC =
+        cutoff_.sigmaT == apex ? 0.0 : std::max(0.0, flow_.k - flow_.mu * cutoff_.sigmaT);
+}
+
+template class ElastoPlastic<2, HenckyLaw, DruckerPragerPlasticity>;
+template class ElastoPlastic<3, HenckyLaw, DruckerPragerPlasticity>;
+template class ElastoPlastic<2, HypoelasticLaw, DruckerPragerPlasticity>;
+template class ElastoPlastic<3, HypoelasticLaw, DruckerPragerPlasticity>;
+
+static const MaterialRegistry<2>::Add
+    registerDruckerPrager2("druckerPrager", createElastoPlastic<2, DruckerPragerPlasticity>);
+static const MaterialRegistry<3>::Add
+    registerDruckerPrager3("druckerPrager", createElastoPlastic<3, DruckerPragerPlasticity>);
 
 } // namespace mpm

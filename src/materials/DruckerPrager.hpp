@@ -1,31 +1,69 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "materials/HenckyReturnMap.hpp"
+#include "materials/ElastoPlastic.hpp"
 
 namespace mpm {
 
-/// Cohesionless Drucker–Prager plasticity on Hencky elasticity [000 Eq. 3–8, 10]:
-/// F = q − μ_s p ≤ 0 with μ_s = 2√3 sin φ/(3 − sin φ), p = −tr σ/3, q = √½ |σ − p1|
-/// [000 Eq. 6, 8]; flow potential g = q − β p with β from the dilation angle ψ by the same
-/// formula (ψ = 0: isochoric); return map in principal logarithmic strain and trans-phase
-/// gasification below ρ_c as described in HenckyReturnMap.hpp.
-/// Keys: density, E, nu, frictionAngle [deg] (0, 90), dilationAngle [deg] [0, φ] (default 0),
-/// transPhase (default true), criticalDensity [kg/m³] (default density).
-template <int dim> class DruckerPrager : public HenckyGranular<dim> {
+/// The friction angle → cone coefficient fit of a Drucker–Prager cone (key `coneFit`).
+enum class ConeFit {
+    compression, ///< through Mohr–Coulomb's compression corners [000 Eq. 8]
+    planeStrain  ///< Mohr–Coulomb in plane strain [001 Eq. 35]
+};
+
+/// Read `coneFit` (compression | planeStrain); the default follows the elastic law's source:
+/// compression with Hencky [000], planeStrain with hypoelastic [001].
+ConeFit readConeFit(const Dictionary& dict, ElasticLaw law);
+/// μ (or q_φ) of an angle [deg] by `fit`.
+double coneFriction(ConeFit fit, double angleDegrees);
+
+/// Rate-independent Drucker–Prager plasticity (`type: druckerPrager`), the plasticity of
+/// ElastoPlastic: shear surface f = q − μ p − k ≤ 0 [000 Eq. 6–8], [001 Eq. 31b] with
+/// p = −tr σ/3, q = √J₂, potential g = q − β p, and for the hypoelastic law the tension cut-off
+/// −p ≤ σ_t [001 Eq. 32]. μ, β and k come from φ, ψ and c by the cone fit.
+/// Keys: frictionAngle [deg] (0, 90), dilationAngle [deg] [0, φ] (default 0), coneFit,
+/// cohesion c [Pa] (≥ 0, default 0; > 0 only with hypoelastic), tensionStrength σ_t [Pa]
+/// ([0, c/tan φ], default c/tan φ, the apex).
+class DruckerPragerPlasticity {
 public:
-    DruckerPrager(const Dictionary& dict, const std::string& name);
+    static constexpr bool plastic = true;
 
-    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const override;
+    DruckerPragerPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law);
 
+    DruckerPragerFlow flow(double /*dt*/) const { return flow_; }
+    TensionCutoff cutoff() const { return cutoff_; }
+    /// Jaky's K0 = 1 − sin φ.
+    double defaultK0(const ElasticConstants& /*c*/) const {
+        return 1.0 - std::sin(phi_ * 3.14159265358979323846 / 180.0);
+    }
+
+    /// Friction angle φ [deg].
+    double frictionAngle() const { return phi_; }
     /// Dilation angle ψ [deg].
     double dilationAngle() const { return psi_; }
-    /// Dilatancy β = 2√3 sin ψ/(3 − sin ψ) [-].
-    double dilatancy() const { return beta_; }
+    ConeFit coneFit() const { return fit_; }
+    /// μ (q_φ) [-].
+    double staticFriction() const { return flow_.mu; }
+    /// β (q_ψ) [-].
+    double dilatancy() const { return flow_.beta; }
+    /// Cohesion c [Pa].
+    double cohesion() const { return cohesion_; }
+    /// Cohesion coefficient k (k_φ) [Pa].
+    double cohesionCoefficient() const { return flow_.k; }
+    /// Tension strength σ_t [Pa].
+    double tensionStrength() const { return cutoff_.sigmaT; }
 
 private:
+    double phi_;
+    ConeFit fit_;
     double psi_;
-    double beta_;
+    double cohesion_;
+    DruckerPragerFlow flow_;
+    TensionCutoff cutoff_;
 };
+
+/// `druckerPrager` with the elastic law of `elasticity:` (default hencky).
+template <int dim, class Law = HenckyLaw>
+using DruckerPrager = ElastoPlastic<dim, Law, DruckerPragerPlasticity>;
 
 } // namespace mpm

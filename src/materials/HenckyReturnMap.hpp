@@ -4,17 +4,15 @@
 #include "core/FastMath.hpp"
 #include "core/Parallel.hpp"
 #include "core/SymmetricEigen.hpp"
-#include "materials/HenckyElastic.hpp"
+#include "materials/FlowRules.hpp"
 #include "materials/Material.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
-#include <string>
 #include <vector>
 
-// Cohesionless granular plasticity on Hencky elasticity, shared by DruckerPrager and MuI.
+// Cohesionless granular plasticity on Hencky elasticity (HenckyLaw with DruckerPragerFlow or
+// MuIFlow, FlowRules.hpp).
 //
 // Return map in principal logarithmic strain (multiplicative plasticity, F = Fᵉ Fᵖ [000 Eq. 3]).
 // bᵉ_tr = f bᵉ fᵀ, f = 1 + Δt L, is decomposed as Q diag(λ) Qᵀ; ε = ½ ln λ is the trial elastic
@@ -36,10 +34,20 @@
 //  - ψ > 0: plastic dilation tr Δεᵖ = β Δγ > 0; with the total deformation of the step given,
 //    the elastic volumetric strain ε_v (and det bᵉ) decreases and p rises by K β Δγ, which pushes
 //    the point to expand in the following steps.
-// Drucker–Prager consistency q_tr − G Δγ = μ (p_tr + K β Δγ) gives Δγ = F_tr / (G + μ K β).
-// From a compressive trial (p_tr > 0) the return keeps p > 0 and |ε̂| ≥ 0 (Δγ < q_tr/G since
-// (q_tr − μ p_tr) G < q_tr (G + μ K β)), so it never passes the apex: only a tensile trial
-// (ε_v ≥ 0, p ≤ 0) goes there (cohesionless: zero stress, bᵉ = 1, plastic strain += √2 |ε̂_tr|).
+// Drucker–Prager consistency q_tr − G Δγ = μ (p_tr + K β Δγ) gives Δγ = F_tr / (G + μ K β), and
+// the returned pressure
+//   p = p_tr + K β Δγ = (G p_tr + K β q_tr) / (G + μ K β).
+// Apex region. The return moves the trial along the fixed direction (K β, −G) in the (p, q)
+// plane, the normal of the potential in the elastic metric; the trials it brings to the apex
+// lie on the line through the apex along that direction, G p_tr + K β q_tr = 0. A trial on the
+// cone side of it (G p_tr + K β q_tr > 0, i.e. q_tr/G > −p_tr/(K β)) returns onto the cone
+// with p ≥ 0 — also a tensile trial (p_tr < 0) with enough shear when ψ > 0; a trial on the
+// other side (or on it) returns to the apex: zero stress, bᵉ = 1 (cohesionless), plastic strain
+// += q_tr/G = √2 |ε̂_tr| (the shear part of the corner return). In Hencky strain
+// (p_tr = −K ε_v, q_tr = √2 G |ε̂|) the apex region is
+//   ε_v ≥ √2 β |ε̂_tr|,
+// which for ψ = 0 (β = 0) is exactly ε_v ≥ 0: the hydrostatic axis. μ(I) flows are isochoric
+// (β = 0), so theirs is ε_v ≥ 0 too.
 //
 // Trans-phase relation [000 Eq. 10]: when ρ_p = m_p/V_p < ρ_c [000 Eq. 18] the point is
 // gasified: zero stress and bᵉ = 1 (it starts stress-free when it re-compacts); its plastic
@@ -47,64 +55,13 @@
 
 namespace mpm {
 
-/// Drucker–Prager coefficient fitted to the compression corners of Mohr–Coulomb,
-/// μ = 2√3 sin φ / (3 − sin φ) [000 Eq. 8], for an angle φ in degrees.
-inline double frictionCoefficient(double angleDegrees) {
-    const double s = std::sin(angleDegrees * 3.14159265358979323846 / 180.0);
-    return 2.0 * std::sqrt(3.0) * s / (3.0 - s);
-}
-
-/// Rate-independent Drucker–Prager flow [000 Eq. 6–8] with potential g = q − β p.
-struct DruckerPragerFlow {
-    double mu;   ///< friction coefficient μ_s [-]
-    double beta; ///< dilatancy β [-] (0: isochoric)
-    double G;    ///< shear modulus [Pa]
-    double K;    ///< bulk modulus [Pa]
-
-    /// Plastic multiplier Δγ = F_tr/(G + μ K β) of a trial Kirchhoff state (q, p) [Pa]
-    /// (≤ 0: elastic). jInv = V⁰/V is unused (rate- and density-independent).
-    double multiplier(double q, double p, double /*jInv*/) const {
-        return (q - mu * p) / (G + mu * K * beta);
-    }
-};
-
-/// μ(I) rheology [000 Eq. 9] with isochoric flow: μ(I) = μ_s + (μ₂ − μ_s)/(I₀/I + 1),
-/// I = γ̇ᵖ √(d² ρ_s / p) with p the Cauchy pressure and γ̇ᵖ = Δγ/Δt the engineering plastic shear
-/// rate (Δγ = √2 |Δε̂ᵖ|, conjugate to q = √½ |s|; simple shear: the shear rate).
-struct MuIFlow {
-    static constexpr double beta = 0.0; ///< isochoric flow
-    double muS;                         ///< static friction coefficient μ_s [-]
-    double dMu;                         ///< μ₂ − μ_s [-]
-    double I0;                          ///< I₀ [-]
-    double G;                           ///< shear modulus [Pa]
-    double rateScale; ///< d √ρ_s / Δt [kg^½ m^-½ s⁻¹]: I = rateScale Δγ / √p
-
-    /// μ(I) [000 Eq. 9] (μ_s at I = 0).
-    double mu(double I) const { return muS + dMu * I / (I0 + I); }
-
-    /// Plastic multiplier Δγ of a trial Kirchhoff state (q, p) [Pa], p > 0, jInv = V⁰/V.
-    /// Consistency q_tr − G Δγ = μ(I) p with I = c Δγ, c = rateScale/√(p jInv), is, times
-    /// (I₀ + c Δγ) > 0, the quadratic G c Δγ² + B Δγ − F I₀ = 0 with F = q_tr − μ_s p,
-    /// B = G I₀ + c (Δμ p − F). The residual is strictly decreasing in Δγ, so for F > 0 there
-    /// is exactly one root, in (0, F/G]; it is taken in closed form without cancellation
-    /// (2 F I₀/(B + √D) for B > 0, (√D − B)/(2 G c) otherwise, D = B² + 4 G c F I₀). c = 0
-    /// (d → 0 or Δt → ∞) gives F/G, the Drucker–Prager return with μ_s. F ≤ 0 gives 0.
-    double multiplier(double q, double p, double jInv) const {
-        const double f0 = q - muS * p, f = f0 > 0.0 ? f0 : 0.0;
-        const double pc = p * jInv;
-        const double c = rateScale / std::sqrt(pc > 1e-300 ? pc : 1e-300);
-        const double b = G * I0 + c * (dMu * p - f);
-        const double sq = std::sqrt(b * b + 4.0 * G * c * f * I0);
-        return b > 0.0 ? 2.0 * f * I0 / (b + sq) : (sq - b) / (2.0 * G * c);
-    }
-};
-
 /// Advance bᵉ, σ and the plastic strain of `ids` over dt by the return map above with the
 /// yield/flow functor `Flow` (chosen at compile time: no per-particle virtual call or option
 /// branch). Flow provides `beta` and `multiplier(q, p, jInv)`. Particles go through in batches of
 /// 8 so that the eigen-decompositions and the return vectorise across particles, as in
-/// HenckyElastic. ρ_c = 0 turns the trans-phase relation off. Elastic points get exactly
-/// HenckyElastic's bᵉ. Returns the first particle whose state is not finite, or -1.
+/// HenckyLaw::elasticUpdate. ρ_c = 0 turns the trans-phase relation off. Elastic points get
+/// exactly HenckyLaw::elasticUpdate's bᵉ. Returns the first particle whose state is not finite, or
+/// -1.
 template <int dim, class Flow>
 Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
                             const ElasticConstants& c, double rhoC, const Flow& flow) {
@@ -145,7 +102,8 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
             const double dg = m > 0.0 ? m : 0.0;
             const bool plastic = dg > 0.0;
             const bool gas = rho[l] < rhoC;
-            const bool stressFree = gas | (ev >= 0.0);
+            // Apex region ε_v ≥ √2 β |ε̂_tr| (see above; ε_v ≥ 0 for β = 0).
+            const bool stressFree = gas | (ev >= sqrt2 * flow.beta * dn);
             // ε = ε_v/3 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
             const double ratio = 1.0 - dg / (sqrt2 * (dn > 1e-300 ? dn : 1e-300));
             const double evNewThird = (ev - flow.beta * dg) / 3.0;
@@ -186,54 +144,5 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
     }
     return bad < n ? ids[bad] : -1;
 }
-
-/// Common part of the cohesionless granular models (DruckerPrager, MuI): Hencky elasticity in
-/// bᵉ [000 Eq. 4–5], the friction angle and the trans-phase relation [000 Eq. 10].
-/// Keys: density, E, nu, frictionAngle φ [deg] (0 < φ < 90), transPhase (default true),
-/// criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]).
-template <int dim> class HenckyGranular : public Material<dim> {
-public:
-    HenckyGranular(const Dictionary& dict, const std::string& name)
-        : Material<dim>(dict, name), c_(dict),
-          phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
-          muS_(frictionCoefficient(phi_)) {
-        const bool transPhase = dict.getBoolOr("transPhase", true);
-        const double rhoC =
-            dict.getScalarOr("criticalDensity", this->density(), Bounds::nonNegative());
-        rhoC_ = transPhase ? rhoC : 0.0;
-    }
-
-    /// √(M/ρ₀) [m/s], M = K + 4G/3.
-    double waveSpeed() const override { return std::sqrt(c_.M / this->density()); }
-    /// bᵉ from σ₀ by inverting Hencky elasticity (J = 1 at seeding); not projected onto the yield
-    /// surface: a σ₀ outside it returns in the first step.
-    void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const override {
-        p.be[i] = sigma0.isZero(0) ? Mat3::Identity()
-                                   : HenckyElastic<dim>::leftCauchyGreenFromStress(c_, sigma0);
-        p.stress[i] = sigma0;
-    }
-    /// Jaky's K0 = 1 − sin φ.
-    double defaultK0() const override {
-        return 1.0 - std::sin(phi_ * 3.14159265358979323846 / 180.0);
-    }
-    /// Hencky energy of the elastic part, ψ(bᵉ) V⁰ [J] [000 Eq. 5].
-    double strainEnergy(const Particles<dim>& p, Index i) const override {
-        return HenckyElastic<dim>::energyDensity(c_, p.be[i]) * p.volume0[i];
-    }
-    /// ρ_c [kg/m³], 0 with transPhase: false.
-    double criticalDensity() const override { return rhoC_; }
-
-    const ElasticConstants& elasticConstants() const { return c_; }
-    /// Friction angle φ [deg].
-    double frictionAngle() const { return phi_; }
-    /// μ_s = 2√3 sin φ/(3 − sin φ) [000 Eq. 8].
-    double staticFriction() const { return muS_; }
-
-protected:
-    ElasticConstants c_;
-    double phi_;      ///< friction angle φ [deg]
-    double muS_;      ///< μ_s [-]
-    double rhoC_ = 0; ///< ρ_c [kg/m³] in use (0: trans-phase off)
-};
 
 } // namespace mpm

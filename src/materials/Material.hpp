@@ -24,6 +24,10 @@ struct ElasticConstants {
     ElasticConstants(double youngs, double poisson);
 };
 
+/// The elastic law of a material (ElastoPlastic.hpp): hypoelastic Jaumann-rate linear elasticity
+/// [001 Eq. 25, 36] or Hencky hyperelasticity in bᵉ [000 Eq. 4–5].
+enum class ElasticLaw { hypoelastic, hencky };
+
 /// A constitutive model. One object serves all particles of one named material; the solver
 /// calls it once per step with their indices (no per-particle virtual call, DESIGN §7).
 template <int dim> class Material {

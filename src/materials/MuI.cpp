@@ -5,28 +5,24 @@
 
 namespace mpm {
 
-template <int dim>
-MuI<dim>::MuI(const Dictionary& dict, const std::string& name)
-    : HenckyGranular<dim>(dict, name),
-      mu2_(frictionCoefficient(dict.getScalar("frictionAngle2", {this->phi_, 90.0, false, false}))),
+MuIPlasticity::MuIPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law)
+    : G_(c.G), phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
+      fit_(readConeFit(dict, law)), muS_(coneFriction(fit_, phi_)),
+      mu2_(coneFriction(fit_, dict.getScalar("frictionAngle2", {phi_, 90.0, false, false}))),
       I0_(dict.getScalarOr("I0", 0.278, Bounds::positive())),
       grainDiameter_(dict.getScalar("grainDiameter", Bounds::positive())),
       grainDensity_(dict.getScalar("grainDensity", Bounds::positive())) {}
 
-template <int dim> MuIFlow MuI<dim>::flow(double dt) const {
-    return MuIFlow{this->muS_, mu2_ - this->muS_, I0_, this->c_.G,
-                   grainDiameter_ * std::sqrt(grainDensity_) / dt};
+MuIFlow MuIPlasticity::flow(double dt) const {
+    return MuIFlow{muS_, mu2_ - muS_, I0_, G_, grainDiameter_ * std::sqrt(grainDensity_) / dt};
 }
 
-template <int dim>
-Index MuI<dim>::updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const {
-    return henckyReturnMapUpdate(p, ids, dt, this->c_, this->rhoC_, flow(dt));
-}
+template class ElastoPlastic<2, HenckyLaw, MuIPlasticity>;
+template class ElastoPlastic<3, HenckyLaw, MuIPlasticity>;
+template class ElastoPlastic<2, HypoelasticLaw, MuIPlasticity>;
+template class ElastoPlastic<3, HypoelasticLaw, MuIPlasticity>;
 
-template class MuI<2>;
-template class MuI<3>;
-
-MPM_REGISTER(MaterialRegistry<2>, MuI<2>, "muI");
-MPM_REGISTER(MaterialRegistry<3>, MuI<3>, "muI");
+static const MaterialRegistry<2>::Add registerMuI2("muI", createElastoPlastic<2, MuIPlasticity>);
+static const MaterialRegistry<3>::Add registerMuI3("muI", createElastoPlastic<3, MuIPlasticity>);
 
 } // namespace mpm

@@ -108,7 +108,7 @@ TEST(DruckerPrager, FrictionCoefficientEq8) {
 
 TEST(DruckerPrager, CreateAndDefaults) {
     const auto m = create<3>();
-    const auto& dp = dynamic_cast<const DruckerPrager<3>&>(*m);
+    const auto& dp = dynamic_cast<const DruckerPrager<3>&>(*m).plasticity();
     EXPECT_EQ(m->name(), "sand");
     EXPECT_DOUBLE_EQ(m->density(), 1600.0);
     EXPECT_DOUBLE_EQ(m->criticalDensity(), 1600.0); // ρ_c = initial density [000 §3.1]
@@ -122,8 +122,8 @@ TEST(DruckerPrager, CreateAndDefaults) {
     EXPECT_EQ(create<2>("transPhase: false\n")->criticalDensity(), 0.0);
     EXPECT_EQ(create<2>("transPhase: no\ncriticalDensity: 1500\n")->criticalDensity(), 0.0);
     const auto dil = create<3>("dilationAngle: 10\n");
-    EXPECT_NEAR(dynamic_cast<const DruckerPrager<3>&>(*dil).dilatancy(), frictionCoefficient(10),
-                1e-15);
+    EXPECT_NEAR(dynamic_cast<const DruckerPrager<3>&>(*dil).plasticity().dilatancy(),
+                frictionCoefficient(10), 1e-15);
     // Hencky elastic materials never gasify.
     EXPECT_EQ(Material<3>::create(parse("type: henckyElastic\ndensity: 1\nE: 1\nnu: 0\n"), "m")
                   ->criticalDensity(),
@@ -195,7 +195,7 @@ template <int dim> void checkReturn(double psi, unsigned seed) {
         SCOPED_TRACE(i);
         const double jInv = p.volume0[i] / p.volume[i];
         double pt, qt, pn, qn;
-        invariants(HenckyElastic<3>::kirchhoff(c, before.be[i]), pt, qt);
+        invariants(HenckyLaw::kirchhoff(c, before.be[i]), pt, qt);
         invariants(p.stress[i], pn, qn);
         ASSERT_GT(qt, mu * pt);
         EXPECT_NEAR(qn, mu * pn, 1e-10 * mu * pn);
@@ -211,10 +211,10 @@ template <int dim> void checkReturn(double psi, unsigned seed) {
             EXPECT_NEAR(p.be[i].determinant(), before.be[i].determinant(), 1e-13);
         }
         // The stored bᵉ gives the stored stress.
-        const Mat3 sigma = HenckyElastic<3>::kirchhoff(c, p.be[i]) * jInv;
+        const Mat3 sigma = HenckyLaw::kirchhoff(c, p.be[i]) * jInv;
         EXPECT_LE((sigma - p.stress[i]).norm(), 1e-9 * p.stress[i].norm());
         // Coaxial return: the deviator keeps its direction.
-        const Mat3 tauTrial = HenckyElastic<3>::kirchhoff(c, before.be[i]);
+        const Mat3 tauTrial = HenckyLaw::kirchhoff(c, before.be[i]);
         const Mat3 sOld = tauTrial + pt * Mat3::Identity();
         const Mat3 sNew = p.stress[i] + pn * Mat3::Identity();
         EXPECT_LE((sNew / sNew.norm() - sOld / sOld.norm()).norm(), 1e-9);
@@ -324,6 +324,97 @@ TEST(DruckerPrager, TensionGoesToApex) {
     }
 }
 
+/// ψ > 0: the apex region is bounded by the potential's normal through the apex, not by the
+/// hydrostatic axis. A tensile trial (ε_v > 0) with enough shear (ε_v < √2 β |ε̂|, i.e.
+/// q_tr/G > −p_tr/(K β)) returns onto the cone with p > 0 and Δγ from consistency; a trial
+/// beyond the normal line goes to the apex.
+TEST(DruckerPrager, DilatantTensileTrialWithShearReturnsOntoCone) {
+    const double psi = 5.0;
+    const auto m = create<3>("dilationAngle: 5\n");
+    const ElasticConstants c(1e7, 0.3);
+    const double mu = frictionCoefficient(30.0), beta = frictionCoefficient(psi);
+    std::mt19937_64 rng(17);
+    Particles<3> p = makeParticles<3>(2);
+    p.be[0] = randomElasticState<3>(rng, 1e-4, 0.01); // √2 β |ε̂| ≈ 1.5e-3 > ε_v: cone side
+    p.be[1] = randomElasticState<3>(rng, 1e-4, 1e-4); // √2 β |ε̂| ≈ 1.5e-5 < ε_v: apex side
+    for (int i = 0; i < 2; ++i) {
+        p.volume[i] = 0.99e-3; // dense: not gasified
+        p.plasticStrain[i] = 0.25;
+    }
+    const Particles<3> before = p;
+    ASSERT_EQ(m->updateStress(p, allIds(2), 1e-4), -1);
+
+    const double jInv = 1e-3 / 0.99e-3;
+    double pt, qt, pn, qn;
+    invariants(HenckyLaw::kirchhoff(c, before.be[0]), pt, qt);
+    ASSERT_LT(pt, 0.0); // tensile trial
+    invariants(p.stress[0], pn, qn);
+    const double dGamma = (qt - mu * pt) / (c.G + mu * c.K * beta);
+    EXPECT_GT(pn, 0.0);
+    EXPECT_NEAR(qn, mu * pn, 1e-9 * qt);
+    EXPECT_NEAR(p.plasticStrain[0] - 0.25, dGamma, 1e-9 * dGamma);
+    // p = (G p_tr + K β q_tr)/(G + μ K β) (Kirchhoff), σ = τ/J.
+    EXPECT_NEAR(pn / jInv, (c.G * pt + c.K * beta * qt) / (c.G + mu * c.K * beta), 1e-9 * qt);
+    EXPECT_LE((HenckyLaw::kirchhoff(c, p.be[0]) * jInv - p.stress[0]).norm(), 1e-9 * qt);
+
+    EXPECT_EQ(p.stress[1], Mat3::Zero());
+    EXPECT_EQ(p.be[1], Mat3::Identity());
+    EXPECT_NEAR(p.plasticStrain[1], 0.25 + sqrt2 * 1e-4, 1e-12);
+
+    // Isochoric flow (ψ = 0) sends the first trial to the apex: its apex region is ε_v ≥ 0.
+    Particles<3> r = before;
+    ASSERT_EQ(create<3>()->updateStress(r, {0}, 1e-4), -1);
+    EXPECT_EQ(r.stress[0], Mat3::Zero());
+}
+
+/// Random tensile trials at ψ = 5° and ψ = φ: the apex exactly beyond the normal line
+/// ε_v ≥ √2 β |ε̂|, else a return onto the cone with p ≥ 0 whose pressure vanishes as the trial
+/// approaches the line (continuity of the map across the region boundary).
+template <int dim> void checkTensileRegions(double psi, unsigned seed) {
+    const auto m = create<dim>("dilationAngle: " + std::to_string(psi) + "\n");
+    const ElasticConstants c(1e7, 0.3);
+    const double mu = frictionCoefficient(30.0), beta = frictionCoefficient(psi);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const int n = 400;
+    Particles<dim> p = makeParticles<dim>(n);
+    for (int i = 0; i < n; ++i) {
+        const double dev = 0.02 * u(rng);
+        const double ev = 2.0 * sqrt2 * beta * dev * u(rng); // both sides of the line
+        p.be[i] = randomElasticState<dim>(rng, ev, dev);
+        p.volume[i] = 0.99e-3;
+    }
+    const Particles<dim> before = p;
+    ASSERT_EQ(m->updateStress(p, allIds(n), 1e-4), -1);
+    int cone = 0, apex = 0;
+    for (int i = 0; i < n; ++i) {
+        SCOPED_TRACE(i);
+        double pt, qt, pn, qn;
+        invariants(HenckyLaw::kirchhoff(c, before.be[i]), pt, qt);
+        invariants(p.stress[i], pn, qn);
+        // Distance of the trial from the normal line in Kirchhoff stress (G p + K β q = 0).
+        const double side = (c.G * pt + c.K * beta * qt) / (c.G + mu * c.K * beta);
+        if (side > 1e-9 * qt) {
+            ++cone;
+            EXPECT_NEAR(pn / (1e-3 / 0.99e-3), side, 1e-9 * qt);
+            EXPECT_NEAR(qn, mu * pn, 1e-9 * qt);
+        } else if (side < -1e-9 * qt) {
+            ++apex;
+            EXPECT_EQ(p.stress[i], Mat3::Zero());
+        }
+    }
+    EXPECT_GT(cone, n / 4);
+    EXPECT_GT(apex, n / 4);
+}
+
+TEST(DruckerPrager, DilatantTensileRegions3D) {
+    checkTensileRegions<3>(5.0, 61);
+    checkTensileRegions<3>(30.0, 62);
+}
+TEST(DruckerPrager, DilatantTensileRegions2D) {
+    checkTensileRegions<2>(5.0, 63);
+}
+
 TEST(DruckerPrager, GasifiedPointsCarryNoStress) {
     std::mt19937_64 rng(8);
     Particles<3> p = makeParticles<3>(12);
@@ -430,8 +521,8 @@ TEST(DruckerPrager, InitialiseAndStrainEnergy) {
     m->initialise(p, 1, Mat3::Zero());
     EXPECT_EQ(p.stress[0], sigma0);
     EXPECT_EQ(p.be[1], Mat3::Identity());
-    EXPECT_LE((HenckyElastic<3>::kirchhoff(c, p.be[0]) - sigma0).norm(), 1e-9 * sigma0.norm());
-    EXPECT_NEAR(m->strainEnergy(p, 0), HenckyElastic<3>::energyDensity(c, p.be[0]) * 1e-3, 1e-15);
+    EXPECT_LE((HenckyLaw::kirchhoff(c, p.be[0]) - sigma0).norm(), 1e-9 * sigma0.norm());
+    EXPECT_NEAR(m->strainEnergy(p, 0), HenckyLaw::energyDensity(c, p.be[0]) * 1e-3, 1e-15);
     EXPECT_EQ(m->strainEnergy(p, 1), 0.0);
 }
 

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "materials/FlowRules.hpp"
+#include "materials/HenckyLaw.hpp"
+#include "materials/HypoelasticLaw.hpp"
+#include "materials/Material.hpp"
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+// Materials as a composition: elastic law × plastic flow × options.
+//
+//  - Elastic law (a policy with static members): HypoelasticLaw (Jaumann rate, stress is the
+//    state) or HenckyLaw (hyperelastic in bᵉ). Each owns its update kernels: the plain elastic
+//    one for NoFlow, its return map for a flow functor.
+//  - Plasticity (an object read from the dictionary): NoPlasticity, DruckerPragerPlasticity
+//    (DruckerPrager.hpp), MuIPlasticity (MuI.hpp). It gives the per-step flow functor
+//    (FlowRules.hpp), the tension cut-off and its K0. A new flow rule (e.g. a viscoelastic μ(I))
+//    is a new Plasticity class with the members of NoPlasticity and a flow functor with
+//    `beta`, `yield` and `multiplier` that the laws' return maps accept, registered with
+//    createElastoPlastic like MuI.cpp.
+//  - Options: the trans-phase relation [000 Eq. 10] (transPhase, criticalDensity) of plastic
+//    materials, passed to the kernels as ρ_c (0: off).
+// ElastoPlastic<dim, Law, Plasticity> is instantiated per combination; the `type:` factory
+// (createElastoPlastic) picks one from `elasticity:` once at set-up, so the per-particle loops
+// have neither virtual calls nor option branches.
+
+namespace mpm {
+
+/// No plastic flow (the elastic types linearElastic and henckyElastic). Reads no keys.
+struct NoPlasticity {
+    static constexpr bool plastic = false;
+
+    NoPlasticity(const Dictionary& /*dict*/, const ElasticConstants& /*c*/, ElasticLaw /*law*/) {}
+    NoFlow flow(double /*dt*/) const { return {}; }
+    TensionCutoff cutoff() const { return {}; }
+    /// ν/(1 − ν), the elastic coefficient of lateral earth pressure at rest.
+    double defaultK0(const ElasticConstants& c) const { return c.nu / (1.0 - c.nu); }
+};
+
+/// A material of elastic law `Law` and plasticity `Plasticity` (see above).
+/// Keys: density, E, nu, the plasticity's keys and, for plastic materials, transPhase (default
+/// true) and criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]).
+template <int dim, class Law, class Plasticity> class ElastoPlastic : public Material<dim> {
+public:
+    ElastoPlastic(const Dictionary& dict, const std::string& name)
+        : Material<dim>(dict, name), c_(dict), plasticity_(dict, c_, Law::kind) {
+        if constexpr (Plasticity::plastic) {
+            const bool transPhase = dict.getBoolOr("transPhase", true);
+            const double rhoC =
+                dict.getScalarOr("criticalDensity", this->density(), Bounds::nonNegative());
+            rhoC_ = transPhase ? rhoC : 0.0;
+        }
+    }
+
+    /// √(M/ρ₀) [m/s], M = K + 4G/3.
+    double waveSpeed() const override { return std::sqrt(c_.M / this->density()); }
+    void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const override {
+        Law::initialise(c_, p, i, sigma0);
+    }
+    Index updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const override {
+        return Law::update(p, ids, dt, c_, rhoC_, plasticity_.flow(dt), plasticity_.cutoff());
+    }
+    double defaultK0() const override { return plasticity_.defaultK0(c_); }
+    double strainEnergy(const Particles<dim>& p, Index i) const override {
+        return Law::strainEnergy(c_, p, i);
+    }
+    /// ρ_c [kg/m³]; 0 for elastic materials and with transPhase: false.
+    double criticalDensity() const override { return rhoC_; }
+
+    const ElasticConstants& elasticConstants() const { return c_; }
+    const Plasticity& plasticity() const { return plasticity_; }
+    static constexpr ElasticLaw elasticLaw() { return Law::kind; }
+
+private:
+    ElasticConstants c_;
+    Plasticity plasticity_;
+    double rhoC_ = 0.0; ///< ρ_c [kg/m³] in use (0: trans-phase off)
+};
+
+/// The factory of a plastic `type:`: reads `elasticity: hencky | hypoelastic` (default
+/// hencky) and builds ElastoPlastic with that law and `Plasticity`.
+template <int dim, class Plasticity>
+std::unique_ptr<Material<dim>> createElastoPlastic(const Dictionary& dict,
+                                                   const std::string& name) {
+    const std::string law = dict.getWordOr("elasticity", "hencky", {"hencky", "hypoelastic"});
+    if (law == "hypoelastic")
+        return std::make_unique<ElastoPlastic<dim, HypoelasticLaw, Plasticity>>(dict, name);
+    return std::make_unique<ElastoPlastic<dim, HenckyLaw, Plasticity>>(dict, name);
+}
+
+} // namespace mpm

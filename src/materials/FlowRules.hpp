@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cmath>
+
+// Per-step yield/flow functors shared by the elastic laws' return maps (HenckyReturnMap.hpp,
+// HypoelasticReturnMap.hpp). Both laws write the yield surface in the invariants
+//   p = −tr σ/3 (pressure, > 0 in compression),  q = √½ |σ − (tr σ/3) 1| = √J₂  [000 Eq. 6],
+// which are p = −σ_m and q = τ of [001 Eq. 33–34]. A functor provides
+//   beta                 the dilatancy of its potential g = q − β p [-] (0: isochoric flow),
+//   yield(q, p)          the rate-independent (static) yield function [Pa],
+//   multiplier(q, p, j)  the plastic multiplier Δγ of a trial state (q, p) with yield(q, p) > 0,
+//                        from consistency with the elastic return q = q_tr − G Δγ,
+//                        p = p_tr + K β Δγ; j = V⁰/V turns a Kirchhoff p into a Cauchy one.
+// They are chosen at compile time: no per-particle virtual call or option branch.
+
+namespace mpm {
+
+constexpr double degree = 3.14159265358979323846 / 180.0;
+
+/// Drucker–Prager coefficient fitted to the compression corners of Mohr–Coulomb,
+/// μ = 2√3 sin φ / (3 − sin φ) [000 Eq. 8], for an angle φ in degrees.
+inline double frictionCoefficient(double angleDegrees) {
+    const double s = std::sin(angleDegrees * 3.14159265358979323846 / 180.0);
+    return 2.0 * std::sqrt(3.0) * s / (3.0 - s);
+}
+
+/// Cohesion coefficient of the same fit, k = 2√3 c cos φ / (3 − sin φ) [Pa] (apex at p = −c/tan φ).
+inline double cohesionCoefficient(double cohesion, double angleDegrees) {
+    const double s = std::sin(angleDegrees * degree), co = std::cos(angleDegrees * degree);
+    return 2.0 * std::sqrt(3.0) * cohesion * co / (3.0 - s);
+}
+
+/// Drucker–Prager coefficient fitted to Mohr–Coulomb in plane strain [001 Eq. 35],
+/// q_φ = 3 tan φ / √(9 + 12 tan² φ), for an angle φ in degrees (q_φ(35°) = 0.5445).
+inline double planeStrainFrictionCoefficient(double angleDegrees) {
+    const double t = std::tan(angleDegrees * degree);
+    return 3.0 * t / std::sqrt(9.0 + 12.0 * t * t);
+}
+
+/// Cohesion coefficient of the plane-strain fit, k_φ = 3c / √(9 + 12 tan² φ) [Pa] [001 Eq. 35].
+inline double planeStrainCohesionCoefficient(double cohesion, double angleDegrees) {
+    const double t = std::tan(angleDegrees * degree);
+    return 3.0 * cohesion / std::sqrt(9.0 + 12.0 * t * t);
+}
+
+/// No plastic flow: the elastic laws' plain update.
+struct NoFlow {};
+
+/// The corner of the shear surface with the tension cut-off [001 Eq. 32] in (σ_m, τ):
+/// C = (σ_t, τ_C) with τ_C = k − μ σ_t ≥ 0. The default (0, 0) is the apex of a cohesionless
+/// cone (no tension). Used by the hypoelastic return map only.
+struct TensionCutoff {
+    double sigmaT = 0.0; ///< tension strength σ_t [Pa] (mean stress, tension positive)
+    double tauC = 0.0;   ///< τ = √J₂ at the corner [Pa]
+};
+
+/// Rate-independent Drucker–Prager flow [000 Eq. 6–8], [001 Eq. 31b]: yield q − μ p − k ≤ 0,
+/// potential g = q − β p.
+struct DruckerPragerFlow {
+    double mu;      ///< friction coefficient μ_s (q_φ) [-]
+    double beta;    ///< dilatancy β (q_ψ) [-] (0: isochoric)
+    double G;       ///< shear modulus [Pa]
+    double K;       ///< bulk modulus [Pa]
+    double k = 0.0; ///< cohesion coefficient k (k_φ) [Pa] (0: cohesionless)
+
+    /// f = q − μ p − k [Pa].
+    double yield(double q, double p) const { return q - mu * p - k; }
+    /// Plastic multiplier Δγ = f_tr/(G + μ K β) of a trial state (q, p) [Pa] (≤ 0: elastic).
+    /// jInv = V⁰/V is unused (rate- and density-independent).
+    double multiplier(double q, double p, double /*jInv*/) const {
+        return (q - mu * p - k) / (G + mu * K * beta);
+    }
+};
+
+/// μ(I) rheology [000 Eq. 9] with isochoric flow: μ(I) = μ_s + (μ₂ − μ_s)/(I₀/I + 1),
+/// I = γ̇ᵖ √(d² ρ_s / p) with p the Cauchy pressure and γ̇ᵖ = Δγ/Δt the engineering plastic shear
+/// rate (Δγ = √2 |Δε̂ᵖ|, conjugate to q = √½ |s|; simple shear: the shear rate).
+struct MuIFlow {
+    static constexpr double beta = 0.0; ///< isochoric flow
+    double muS;                         ///< static friction coefficient μ_s [-]
+    double dMu;                         ///< μ₂ − μ_s [-]
+    double I0;                          ///< I₀ [-]
+    double G;                           ///< shear modulus [Pa]
+    double rateScale; ///< d √ρ_s / Δt [kg^½ m^-½ s⁻¹]: I = rateScale Δγ / √p
+
+    /// μ(I) [000 Eq. 9] (μ_s at I = 0).
+    double mu(double I) const { return muS + dMu * I / (I0 + I); }
+
+    /// Static yield function q − μ_s p [Pa]: the flow starts where it is positive.
+    double yield(double q, double p) const { return q - muS * p; }
+
+    /// Plastic multiplier Δγ of a trial state (q, p) [Pa], p > 0, jInv = V⁰/V.
+    /// Consistency q_tr − G Δγ = μ(I) p with I = c Δγ, c = rateScale/√(p jInv), is, times
+    /// (I₀ + c Δγ) > 0, the quadratic G c Δγ² + B Δγ − F I₀ = 0 with F = q_tr − μ_s p,
+    /// B = G I₀ + c (Δμ p − F). The residual is strictly decreasing in Δγ, so for F > 0 there
+    /// is exactly one root, in (0, F/G]; it is taken in closed form without cancellation
+    /// (2 F I₀/(B + √D) for B > 0, (√D − B)/(2 G c) otherwise, D = B² + 4 G c F I₀). c = 0
+    /// (d → 0 or Δt → ∞) gives F/G, the Drucker–Prager return with μ_s. F ≤ 0 gives 0.
+    double multiplier(double q, double p, double jInv) const {
+        const double f0 = q - muS * p, f = f0 > 0.0 ? f0 : 0.0;
+        const double pc = p * jInv;
+        const double c = rateScale / std::sqrt(pc > 1e-300 ? pc : 1e-300);
+        const double b = G * I0 + c * (dMu * p - f);
+        const double sq = std::sqrt(b * b + 4.0 * G * c * f * I0);
+        return b > 0.0 ? 2.0 * f * I0 / (b + sq) : (sq - b) / (2.0 * G * c);
+    }
+};
+
+} // namespace mpm
