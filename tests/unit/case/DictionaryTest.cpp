@@ -9,7 +9,6 @@
 #include <fstream>
 #include <functional>
 #include <string>
-#include <unistd.h>
 
 namespace mpm {
 namespace {
@@ -32,29 +31,17 @@ Dictionary parse(const std::string& text) {
     return Dictionary::fromString(text, "test");
 }
 
-/// A file in the temporary directory, removed when the test ends.
-class TempFile {
-public:
-    explicit TempFile(const std::string& text)
-        : path_(std::filesystem::temp_directory_path() /
-                ("mpmDictionaryTest_" + std::to_string(::getpid()) + "_" +
-                 std::to_string(nextId()) + ".yaml")) {
-        std::ofstream(path_) << text;
+/// Tests that read files: `file(text)` writes one into the test's temporary folder.
+class DictionaryFile : public test::TempDirTest {
+protected:
+    std::filesystem::path file(const std::string& text) {
+        const std::filesystem::path p = dir_ / ("dict" + std::to_string(files_++) + ".yaml");
+        std::ofstream(p, std::ios::binary) << text;
+        return p;
     }
-    ~TempFile() {
-        std::error_code ec;
-        std::filesystem::remove(path_, ec);
-    }
-    TempFile(const TempFile&) = delete;
-    TempFile& operator=(const TempFile&) = delete;
-    const std::filesystem::path& path() const { return path_; }
 
 private:
-    static int nextId() {
-        static int id = 0;
-        return id++;
-    }
-    std::filesystem::path path_;
+    int files_ = 0;
 };
 
 // Success paths
@@ -404,9 +391,9 @@ TEST(Dictionary, SingleDocumentOnly) {
     expectError([] { parse("a: 1\n---\nb: 2\n"); }, 3, "", "single YAML document");
 }
 
-TEST(Dictionary, FromFile) {
-    const TempFile f("# header\nrho: 1000\nmu: oops\n");
-    const Dictionary d = Dictionary::fromFile(f.path(), "constant/materials");
+TEST_F(DictionaryFile, FromFile) {
+    const Dictionary d =
+        Dictionary::fromFile(file("# header\nrho: 1000\nmu: oops\n"), "constant/materials");
     EXPECT_EQ(d.fileName(), "constant/materials");
     EXPECT_EQ(d.path(), "");
     EXPECT_DOUBLE_EQ(d.getScalar("rho"), 1000.0);
@@ -414,26 +401,23 @@ TEST(Dictionary, FromFile) {
                 "constant/materials");
 }
 
-TEST(Dictionary, FromEmptyFile) {
-    const TempFile f("");
-    const Dictionary d = Dictionary::fromFile(f.path(), "system/control");
+TEST_F(DictionaryFile, FromEmptyFile) {
+    const Dictionary d = Dictionary::fromFile(file(""), "system/control");
     EXPECT_TRUE(d.keys().empty());
     EXPECT_NO_THROW(d.checkUnknownKeys());
 }
 
-TEST(Dictionary, FromFileSyntaxError) {
-    const TempFile f("a: 1\nb: [\n");
-    expectError([&] { Dictionary::fromFile(f.path(), "system/control"); }, 3, "",
-                "YAML syntax error", "system/control");
+TEST_F(DictionaryFile, FromFileSyntaxError) {
+    const std::filesystem::path f = file("a: 1\nb: [\n");
+    expectError([&] { Dictionary::fromFile(f, "system/control"); }, 3, "", "YAML syntax error",
+                "system/control");
 }
 
-TEST(Dictionary, MissingFile) {
-    const std::filesystem::path missing =
-        std::filesystem::temp_directory_path() / "mpmDictionaryTest_does_not_exist.yaml";
+TEST_F(DictionaryFile, MissingFile) {
+    const std::filesystem::path missing = dir_ / "does_not_exist.yaml";
     expectError([&] { Dictionary::fromFile(missing, "system/control"); }, 0, "", "cannot open file",
                 "system/control");
-    expectError([&] { Dictionary::fromFile(std::filesystem::temp_directory_path(), "dir"); }, 0, "",
-                "cannot open file", "dir");
+    expectError([&] { Dictionary::fromFile(dir_, "dir"); }, 0, "", "cannot open file", "dir");
 }
 
 TEST(Dictionary, EditDistance) {
