@@ -420,6 +420,52 @@ TEST_F(DictionaryFile, MissingFile) {
     expectError([&] { Dictionary::fromFile(dir_, "dir"); }, 0, "", "cannot open file", "dir");
 }
 
+/// True if `text` has no byte a terminal could take for a control or an invalid character:
+/// only printable ASCII and '\n' (the corrupted files below hold no valid multi-byte UTF-8).
+bool plainAscii(const std::string& text) {
+    for (const char c : text) {
+        const auto b = static_cast<unsigned char>(c);
+        if ((b < 0x20 && b != '\n') || b >= 0x7f) return false;
+    }
+    return true;
+}
+
+TEST_F(DictionaryFile, CorruptedBytesAreEscapedInMessages) {
+    // A quoted value with an invalid byte and control bytes (ESC, SOH, DEL, CR).
+    const Dictionary d = Dictionary::fromFile(
+        file(std::string("rho: \"2\xff\x1b[2J\x01\x7f\r\"\nrh\xfeo: 1\n")), "constant/materials");
+    const InputError value = catchInputError([&] { d.getScalar("rho"); });
+    EXPECT_TRUE(plainAscii(value.what())) << value.what();
+    EXPECT_NE(std::string(value.what()).find("got '2\\xff\\x1b[2J\\x01\\x7f\\x0d'"),
+              std::string::npos)
+        << value.what();
+    // An unknown key is named escaped in the message, as written in key().
+    const InputError key = catchInputError([&] { d.checkUnknownKeys(); });
+    EXPECT_TRUE(plainAscii(key.what())) << key.what();
+    EXPECT_NE(std::string(key.what()).find("key 'rh\\xfeo'"), std::string::npos) << key.what();
+    EXPECT_EQ(key.key(), "rh\xfeo");
+}
+
+TEST_F(DictionaryFile, YamlParserMessagesAreEscaped) {
+    // yaml-cpp quotes the character after a backslash in its message.
+    const std::filesystem::path f = file(std::string("a: 1\nb: \"x\\\xff\"\n"));
+    const InputError e = catchInputError([&] { Dictionary::fromFile(f, "system/controlDict"); });
+    EXPECT_EQ(e.line(), 2) << e.what();
+    EXPECT_TRUE(plainAscii(e.what())) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\\xff"), std::string::npos) << e.what();
+    // Control bytes where YAML expects structure.
+    const std::filesystem::path g = file("a: [1, \x01\x02\xff\n");
+    const InputError e2 = catchInputError([&] { Dictionary::fromFile(g, "system/controlDict"); });
+    EXPECT_TRUE(plainAscii(e2.what())) << e2.what();
+}
+
+TEST_F(DictionaryFile, ValidUtf8StaysReadable) {
+    const Dictionary d = Dictionary::fromFile(file("angle: 30\xc2\xb0 \xce\xbc\n"), "m");
+    const InputError e = catchInputError([&] { d.getScalar("angle"); });
+    EXPECT_NE(std::string(e.what()).find("got '30\xc2\xb0 \xce\xbc'"), std::string::npos)
+        << e.what();
+}
+
 TEST(Dictionary, EditDistance) {
     EXPECT_EQ(editDistance("", ""), 0);
     EXPECT_EQ(editDistance("abc", ""), 3);
