@@ -131,7 +131,8 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                                 double maxDisplacement, double dt) const {
     Index moved = 0;
     double minGap = 1e300;
-    double pushed = 0.0; // largest projection so far: points pushed out of one body move
+    double minGapBefore = 1e300; // the same before any point is projected: what the law achieved
+    double pushed = 0.0;         // largest projection so far: points pushed out of one body move
     for (std::size_t b = 0; b < bodies.size() && b < nearOf_.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
@@ -146,16 +147,18 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
         const bool project = law.nonPenetrating();
         double push = 0.0;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : moved)            \
-    reduction(min : minGap) reduction(max : push)
+    reduction(min : minGap, minGapBefore) reduction(max : push)
         for (Index k = 0; k < n; ++k) {
             const Index i = near[k];
             const double gap = project ? law.minimumGap(radius(p.volume0[i])) : -1e300;
             if (phi0[k] - reach > std::max(gap, 0.0)) {
                 minGap = std::min(minGap, phi0[k] - reach); // cannot be closer: skipped
+                minGapBefore = std::min(minGapBefore, phi0[k] - reach);
                 continue;
             }
             Vec<dim> nk;
             const double phi = body.distance(p.x[i], nk);
+            minGapBefore = std::min(minGapBefore, phi);
             if (phi >= gap) {
                 minGap = std::min(minGap, phi);
                 continue;
@@ -178,6 +181,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
         pushed += push;
     }
     minGap_ = minGap;
+    minGapBefore_ = minGapBefore;
     return moved;
 }
 

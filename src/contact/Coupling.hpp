@@ -72,6 +72,12 @@ public:
     /// Smallest gap ξ of any point near a coupled body after the last enforceGap [m] (a lower
     /// bound: points skipped there count with their bound); +inf when no point is near a body.
     double minimumGapSeen() const { return minGap_; }
+    /// Smallest gap ξ of any point near a coupled body in the last enforceGap, before it projected
+    /// points out [m] (same lower bound for skipped points; +inf when no point is near a body):
+    /// what the force law alone achieved. Negative: a point ended the step inside a body. With
+    /// a non-penetrating law it is the barrier's result, minimumGapSeen() that of the safety net;
+    /// without projection (linear spring) both are equal.
+    double minimumGapBeforeProjection() const { return minGapBefore_; }
 
     /// The contact limit on Δt over all laws for the lightest point [000 Eq. 24].
     double stableDeltaT(double lightestMass, double maxWave) const;
@@ -109,6 +115,7 @@ private:
     std::vector<Index> gridPoints_, localPoints_;
     std::vector<Vec<dim>> gridForces_, localForces_;
     mutable double minGap_ = 1e300;
+    mutable double minGapBefore_ = 1e300;
     double maxRadius_ = 0;
     Index numContacts_ = 0;
 };

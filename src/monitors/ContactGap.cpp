@@ -7,9 +7,11 @@ namespace mpm {
 
 /// `type: contactGap`: the smallest signed distance ξ of any material point to any coupled
 /// rigid body at the end of each step [m] (negative: a point is inside a body), the smallest
-/// since the start of the run, and the number of points in contact. With the barrier it
-/// stays ≥ ξ_min > 0 by construction; with the linear spring it shows how far points sink in.
-/// Sampled every step.
+/// since the start of the run, the number of points in contact, and the smallest ξ of the step
+/// before the coupling projected points out to ξ_min (Coupling::enforceGap). With the barrier
+/// the first stays ≥ ξ_min > 0 by construction (the projection is a safety net) and the last
+/// shows whether the barrier force alone kept the points out; with the linear spring nothing
+/// is projected, both are equal and show how far points sink in. Sampled every step.
 template <int dim> class ContactGap final : public FunctionObject<dim> {
 public:
     ContactGap(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {}
@@ -23,10 +25,11 @@ protected:
         smallest_ = std::min(smallest_, s.minimumGap);
     }
     std::vector<std::string> columns(const State<dim>&) const override {
-        return {"minimumGap", "smallestSoFar", "contacts"};
+        return {"minimumGap", "smallestSoFar", "contacts", "minimumGapBeforeProjection"};
     }
     std::vector<double> values(const State<dim>& s) const override {
-        return {s.minimumGap, smallest_, static_cast<double>(s.contacts)};
+        return {s.minimumGap, smallest_, static_cast<double>(s.contacts),
+                s.minimumGapBeforeProjection};
     }
 
 private:

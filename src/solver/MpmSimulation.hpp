@@ -87,7 +87,8 @@ private:
                 reactions_,
                 bodies_.bodies(),
                 coupling_ ? coupling_->minimumGapSeen() : 1e300,
-                coupling_ ? coupling_->numContacts() : 0};
+                coupling_ ? coupling_->numContacts() : 0,
+                coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300};
     }
 
     const Case& case_;

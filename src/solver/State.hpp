@@ -26,6 +26,9 @@ template <int dim> struct State {
     double minimumGap;
     /// Points in contact with a body in the last step.
     Index contacts;
+    /// minimumGap before the coupling projected points out (Coupling::enforceGap) [m]: what the
+    /// force law alone achieved.
+    double minimumGapBeforeProjection;
 };
 
 } // namespace mpm

@@ -8,8 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <random>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 
 namespace mpm::test {
 
@@ -24,6 +29,47 @@ inline InputError catchInputError(const std::function<void()>& f) {
     ADD_FAILURE() << "expected an InputError";
     return InputError("", -1, "", "no error");
 }
+
+/// A new, empty folder under the system temporary directory with a unique name
+/// (`mpmFoam_<suite>_<test>_XXXXXX`, made by mkdtemp: no clash between processes or tests run
+/// at the same time), removed with its contents when the object is destroyed.
+class TempDir {
+public:
+    TempDir() {
+        std::string stem = "mpmFoam";
+        if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
+            stem += std::string("_") + info->test_suite_name() + "_" + info->name();
+        for (char& c : stem)
+            if (c == '/') c = '_'; // parameterised tests have '/' in their names
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / (stem + "_XXXXXX")).string();
+        if (::mkdtemp(pattern.data()) == nullptr)
+            throw std::runtime_error("cannot create a temporary folder " + pattern);
+        path_ = pattern;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    std::filesystem::path operator/(const std::filesystem::path& relative) const {
+        return path_ / relative;
+    }
+
+private:
+    std::filesystem::path path_;
+};
+
+/// Fixture for tests that write files: `dir_` is a fresh TempDir of the test, removed when the
+/// test ends, also when it fails (the fixture is destroyed after every test).
+class TempDirTest : public ::testing::Test {
+protected:
+    TempDir tmp_;
+    std::filesystem::path dir_ = tmp_.path();
+};
 
 /// Mean pressure p = −tr σ/3 and q = √½ |σ − (tr σ/3) 1| [000 Eq. 6].
 inline void invariants(const Mat3& s, double& p, double& q) {

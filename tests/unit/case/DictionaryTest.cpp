@@ -9,7 +9,6 @@
 #include <fstream>
 #include <functional>
 #include <string>
-#include <unistd.h>
 
 namespace mpm {
 namespace {
@@ -32,29 +31,17 @@ Dictionary parse(const std::string& text) {
     return Dictionary::fromString(text, "test");
 }
 
-/// A file in the temporary directory, removed when the test ends.
-class TempFile {
-public:
-    explicit TempFile(const std::string& text)
-        : path_(std::filesystem::temp_directory_path() /
-                ("mpmDictionaryTest_" + std::to_string(::getpid()) + "_" +
-                 std::to_string(nextId()) + ".yaml")) {
-        std::ofstream(path_) << text;
+/// Tests that read files: `file(text)` writes one into the test's temporary folder.
+class DictionaryFile : public test::TempDirTest {
+protected:
+    std::filesystem::path file(const std::string& text) {
+        const std::filesystem::path p = dir_ / ("dict" + std::to_string(files_++) + ".yaml");
+        std::ofstream(p, std::ios::binary) << text;
+        return p;
     }
-    ~TempFile() {
-        std::error_code ec;
-        std::filesystem::remove(path_, ec);
-    }
-    TempFile(const TempFile&) = delete;
-    TempFile& operator=(const TempFile&) = delete;
-    const std::filesystem::path& path() const { return path_; }
 
 private:
-    static int nextId() {
-        static int id = 0;
-        return id++;
-    }
-    std::filesystem::path path_;
+    int files_ = 0;
 };
 
 // Success paths
@@ -404,9 +391,9 @@ TEST(Dictionary, SingleDocumentOnly) {
     expectError([] { parse("a: 1\n---\nb: 2\n"); }, 3, "", "single YAML document");
 }
 
-TEST(Dictionary, FromFile) {
-    const TempFile f("# header\nrho: 1000\nmu: oops\n");
-    const Dictionary d = Dictionary::fromFile(f.path(), "constant/materials");
+TEST_F(DictionaryFile, FromFile) {
+    const Dictionary d =
+        Dictionary::fromFile(file("# header\nrho: 1000\nmu: oops\n"), "constant/materials");
     EXPECT_EQ(d.fileName(), "constant/materials");
     EXPECT_EQ(d.path(), "");
     EXPECT_DOUBLE_EQ(d.getScalar("rho"), 1000.0);
@@ -414,26 +401,69 @@ TEST(Dictionary, FromFile) {
                 "constant/materials");
 }
 
-TEST(Dictionary, FromEmptyFile) {
-    const TempFile f("");
-    const Dictionary d = Dictionary::fromFile(f.path(), "system/control");
+TEST_F(DictionaryFile, FromEmptyFile) {
+    const Dictionary d = Dictionary::fromFile(file(""), "system/control");
     EXPECT_TRUE(d.keys().empty());
     EXPECT_NO_THROW(d.checkUnknownKeys());
 }
 
-TEST(Dictionary, FromFileSyntaxError) {
-    const TempFile f("a: 1\nb: [\n");
-    expectError([&] { Dictionary::fromFile(f.path(), "system/control"); }, 3, "",
-                "YAML syntax error", "system/control");
+TEST_F(DictionaryFile, FromFileSyntaxError) {
+    const std::filesystem::path f = file("a: 1\nb: [\n");
+    expectError([&] { Dictionary::fromFile(f, "system/control"); }, 3, "", "YAML syntax error",
+                "system/control");
 }
 
-TEST(Dictionary, MissingFile) {
-    const std::filesystem::path missing =
-        std::filesystem::temp_directory_path() / "mpmDictionaryTest_does_not_exist.yaml";
+TEST_F(DictionaryFile, MissingFile) {
+    const std::filesystem::path missing = dir_ / "does_not_exist.yaml";
     expectError([&] { Dictionary::fromFile(missing, "system/control"); }, 0, "", "cannot open file",
                 "system/control");
-    expectError([&] { Dictionary::fromFile(std::filesystem::temp_directory_path(), "dir"); }, 0, "",
-                "cannot open file", "dir");
+    expectError([&] { Dictionary::fromFile(dir_, "dir"); }, 0, "", "cannot open file", "dir");
+}
+
+/// True if `text` has no byte a terminal could take for a control or an invalid character:
+/// only printable ASCII and '\n' (the corrupted files below hold no valid multi-byte UTF-8).
+bool plainAscii(const std::string& text) {
+    for (const char c : text) {
+        const auto b = static_cast<unsigned char>(c);
+        if ((b < 0x20 && b != '\n') || b >= 0x7f) return false;
+    }
+    return true;
+}
+
+TEST_F(DictionaryFile, CorruptedBytesAreEscapedInMessages) {
+    // A quoted value with an invalid byte and control bytes (ESC, SOH, DEL, CR).
+    const Dictionary d = Dictionary::fromFile(
+        file(std::string("rho: \"2\xff\x1b[2J\x01\x7f\r\"\nrh\xfeo: 1\n")), "constant/materials");
+    const InputError value = catchInputError([&] { d.getScalar("rho"); });
+    EXPECT_TRUE(plainAscii(value.what())) << value.what();
+    EXPECT_NE(std::string(value.what()).find("got '2\\xff\\x1b[2J\\x01\\x7f\\x0d'"),
+              std::string::npos)
+        << value.what();
+    // An unknown key is named escaped in the message, as written in key().
+    const InputError key = catchInputError([&] { d.checkUnknownKeys(); });
+    EXPECT_TRUE(plainAscii(key.what())) << key.what();
+    EXPECT_NE(std::string(key.what()).find("key 'rh\\xfeo'"), std::string::npos) << key.what();
+    EXPECT_EQ(key.key(), "rh\xfeo");
+}
+
+TEST_F(DictionaryFile, YamlParserMessagesAreEscaped) {
+    // yaml-cpp quotes the character after a backslash in its message.
+    const std::filesystem::path f = file(std::string("a: 1\nb: \"x\\\xff\"\n"));
+    const InputError e = catchInputError([&] { Dictionary::fromFile(f, "system/controlDict"); });
+    EXPECT_EQ(e.line(), 2) << e.what();
+    EXPECT_TRUE(plainAscii(e.what())) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\\xff"), std::string::npos) << e.what();
+    // Control bytes where YAML expects structure.
+    const std::filesystem::path g = file("a: [1, \x01\x02\xff\n");
+    const InputError e2 = catchInputError([&] { Dictionary::fromFile(g, "system/controlDict"); });
+    EXPECT_TRUE(plainAscii(e2.what())) << e2.what();
+}
+
+TEST_F(DictionaryFile, ValidUtf8StaysReadable) {
+    const Dictionary d = Dictionary::fromFile(file("angle: 30\xc2\xb0 \xce\xbc\n"), "m");
+    const InputError e = catchInputError([&] { d.getScalar("angle"); });
+    EXPECT_NE(std::string(e.what()).find("got '30\xc2\xb0 \xce\xbc'"), std::string::npos)
+        << e.what();
 }
 
 TEST(Dictionary, EditDistance) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/ParticleFile.hpp"
 
+#include "TestSupport.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vtkCellType.h>
@@ -15,8 +17,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <unistd.h>
-
 namespace {
 
 using mpm::io::PointArray;
@@ -24,19 +24,7 @@ using mpm::io::PointCloud;
 namespace fs = std::filesystem;
 
 /// A fresh, empty folder per test, removed afterwards.
-class ParticleFileTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("mpmFoam_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    fs::path dir_;
-};
+using ParticleFileTest = mpm::test::TempDirTest;
 
 std::string readText(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/PvdIndex.hpp"
 
+#include "TestSupport.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
-
-#include <unistd.h>
 
 namespace {
 
@@ -14,18 +14,8 @@ using mpm::io::PvdIndex;
 namespace fs = std::filesystem;
 
 /// A fresh, empty folder per test, removed afterwards.
-class PvdIndexTest : public ::testing::Test {
+class PvdIndexTest : public mpm::test::TempDirTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("mpmFoam_pvd_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-        file_ = dir_ / "particles.pvd";
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     std::string text() const {
         std::ifstream in(file_, std::ios::binary);
         std::ostringstream out;
@@ -33,8 +23,7 @@ protected:
         return out.str();
     }
 
-    fs::path dir_;
-    fs::path file_;
+    fs::path file_ = dir_ / "particles.pvd";
 };
 
 const std::string head = "<?xml version=\"1.0\"?>\n"

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "TestMeshes.hpp"
+#include "TestSupport.hpp"
 
 #include "levelset/LevelSetFile.hpp"
 #include "levelset/MassProperties.hpp"
@@ -15,8 +16,6 @@
 #include <iostream>
 #include <random>
 #include <stdexcept>
-
-#include <unistd.h>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -282,18 +281,7 @@ TEST(MassProperties, flatSurfaceThrows) {
 }
 
 /// A fresh folder per test, removed afterwards.
-class LevelSetFiles : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("mpmFoamLevelSet_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using LevelSetFiles = mpm::test::TempDirTest;
 
 TEST_F(LevelSetFiles, vtiRoundTrip) {
     LevelSet ls;

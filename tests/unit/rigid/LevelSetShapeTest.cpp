@@ -5,9 +5,10 @@
 #include "levelset/LevelSetFile.hpp"
 #include "rigid/RigidBody.hpp"
 
+#include "TestSupport.hpp"
+
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -22,20 +23,7 @@ constexpr double radius = 0.3;
 
 namespace fs = std::filesystem;
 
-/// A temporary directory, removed with its contents at the end of the test.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() /
-               ("mpmLevelSetShape_" +
-                std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
+using test::TempDir;
 
 /// Signed distance of a sphere of `radius` about the origin on the grid [−half, half]³ with
 /// spacing h, with the sphere's mass properties.
@@ -82,7 +70,7 @@ TEST(LevelSetShape, SphereDistanceAndNormalSecondOrder) {
     TempDir tmp;
     double prevPhi = 0.0, prevN = 0.0;
     for (const double h : {0.04, 0.02}) {
-        const fs::path file = tmp.path / ("sphere" + std::to_string(h) + ".vti");
+        const fs::path file = tmp / ("sphere" + std::to_string(h) + ".vti");
         levelset::writeVti(file, sphereLevelSet(h), true);
         const auto shape = shapeFromFile(file);
         const auto [ePhi, eN] = sphereErrors(*shape);
@@ -155,7 +143,7 @@ TEST(LevelSetShape, OutsideTheGridIsConservative) {
 
 TEST(LevelSetShape, MassPropertiesAndBoundingRadiusFromTheFile) {
     TempDir tmp;
-    const fs::path file = tmp.path / "sphere.vti";
+    const fs::path file = tmp / "sphere.vti";
     levelset::writeVti(file, sphereLevelSet(0.05));
     const auto s = shapeFromFile(file);
     EXPECT_NEAR(s->volume(), 4.0 / 3.0 * pi * std::pow(radius, 3), 1e-6);
@@ -194,7 +182,7 @@ TEST(LevelSetShape, Errors) {
     TempDir tmp;
     // Missing file: an InputError at key 'file'.
     try {
-        shapeFromFile(tmp.path / "missing.vti");
+        shapeFromFile(tmp / "missing.vti");
         FAIL() << "expected an InputError";
     } catch (const InputError& e) {
         EXPECT_EQ(e.key(), "file");
@@ -205,22 +193,22 @@ TEST(LevelSetShape, Errors) {
                      "{type: levelSet, file: constant/levelSets/noSuchBody.vti}", "test")),
                  InputError);
     // A relative path is taken from the current working directory.
-    levelset::writeVti(tmp.path / "rel.vti", sphereLevelSet(0.1));
+    levelset::writeVti(tmp / "rel.vti", sphereLevelSet(0.1));
     {
         const fs::path cwd = fs::current_path();
-        fs::current_path(tmp.path);
+        fs::current_path(tmp.path());
         EXPECT_NO_THROW(
             Shape<3>::create(Dictionary::fromString("{type: levelSet, file: rel.vti}", "test")));
         fs::current_path(cwd);
     }
     // Unknown key.
-    const fs::path file = tmp.path / "sphere.vti";
+    const fs::path file = tmp / "sphere.vti";
     levelset::writeVti(file, sphereLevelSet(0.1));
     EXPECT_THROW(Shape<3>::create(Dictionary::fromString(
                      "{type: levelSet, file: " + file.string() + ", scale: 2}", "test")),
                  InputError);
     // Not a .vti: an InputError at 'file'.
-    const fs::path junk = tmp.path / "junk.vti";
+    const fs::path junk = tmp / "junk.vti";
     { std::ofstream(junk) << "not xml"; }
     EXPECT_THROW(shapeFromFile(junk), InputError);
     // 2D: the type is 3D only.
@@ -235,7 +223,7 @@ TEST(LevelSetShape, Errors) {
 /// moves the centroid.
 TEST(LevelSetShape, BodyPoseDefaultsToTheMeshPose) {
     TempDir tmp;
-    const fs::path file = tmp.path / "tilted.vti";
+    const fs::path file = tmp / "tilted.vti";
     levelset::LevelSet ls = sphereLevelSet(0.1);
     ls.centroid = Vec3(1.0, 2.0, 3.0);
     ls.rotation = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();

@@ -2,6 +2,8 @@
 #include "rigid/RigidBody.hpp"
 #include "rigid/RigidBodyOutput.hpp"
 
+#include "TestSupport.hpp"
+
 #include <gtest/gtest.h>
 
 #include <vtkCellData.h>
@@ -16,8 +18,6 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
-
-#include <unistd.h>
 
 namespace mpm {
 namespace {
@@ -441,18 +441,7 @@ TEST(RigidBodyTest, StateRoundTrip) {
     EXPECT_EQ(c->rotation(), d->rotation());
 }
 
-class RigidBodyFileTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("mpmFoam_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
-};
+using RigidBodyFileTest = test::TempDirTest;
 
 TEST_F(RigidBodyFileTest, StateFile) {
     std::vector<std::unique_ptr<RigidBody<3>>> bodies;
