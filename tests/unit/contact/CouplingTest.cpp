@@ -50,7 +50,7 @@ Particles<dim> randomCloud(const Grid<dim>& g, const RigidBody<dim>& body, int n
         p.stress[i] = Mat3::Zero();
         p.volume0[i] = p.volume[i] = (0.2 + 0.8 * u(rng)) * std::pow(0.5 * H, dim);
         p.mass[i] = 1000 * p.volume[i];
-        p.plasticStrain[i] = p.slip[i] = 0;
+        p.plasticStrain[i] = 0;
         p.id[i] = i;
         p.material[i] = 0;
     }
@@ -66,7 +66,7 @@ template <int dim> void expectBruteForce(const std::string& bodyYaml, int n, std
     bodies.push_back(
         std::make_unique<RigidBody<dim>>(Dictionary::fromString(bodyYaml, "test"), "body"));
     const RigidBody<dim>& body = *bodies[0];
-    const Particles<dim> p = randomCloud(grid, body, n, seed);
+    Particles<dim> p = randomCloud(grid, body, n, seed);
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws;
     laws.push_back(CouplingLaw<dim>::create(
@@ -75,9 +75,9 @@ template <int dim> void expectBruteForce(const std::string& bodyYaml, int n, std
     coupling.setParticles(p);
     BlockSort<dim> sort;
     ASSERT_EQ(sort.update(p, grid), -1);
-    std::vector<double> slip(p.size(), 0.0);
+    coupling.declareState(p, bodies);
     bodies[0]->clearForces();
-    coupling.computeForces(p, slip, bodies, {340.0}, {0.0}, sort, grid, 1e-4);
+    coupling.computeForces(p, bodies, {340.0}, {0.0}, sort, grid, 1e-4);
 
     // Brute force: every point, φ < r_p.
     std::map<Index, Vec<dim>> expected;
