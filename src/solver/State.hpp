@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "forces/BodyAcceleration.hpp"
 #include "grid/Grid.hpp"
 #include "materials/Material.hpp"
 #include "particles/Particles.hpp"
@@ -12,13 +11,6 @@
 #include <vector>
 
 namespace mpm {
-
-/// TEMPORARY (reverted before the branch is handed over): lets MpmSimulation::state() compile
-/// without the three members below until the lead adds them.
-template <int dim> const BodyAcceleration<dim>& temporaryZeroAcceleration() {
-    static const auto g = BodyAcceleration<dim>::constant(Vec<dim>::Zero());
-    return *g;
-}
 
 /// What function objects may read of a running simulation.
 template <int dim> struct State {
@@ -34,12 +26,6 @@ template <int dim> struct State {
     double minimumGap;
     /// Points in contact with a body in the last step.
     Index contacts;
-    /// Current simulated time [s].
-    double time = 0;
-    /// The body acceleration g(t) of constant/g.
-    const BodyAcceleration<dim>& acceleration = temporaryZeroAcceleration<dim>();
-    /// ∫ Σ_p m_p g(t)·v_p dt since the start (particles and free bodies) [J].
-    double accelerationWork = 0;
 };
 
 } // namespace mpm
