@@ -35,8 +35,6 @@ public:
     /// 2 |g₀| ≤ |g₀| + A ω² ≤ |g|max as soon as Γ ≥ 1 (below Γ = 1 the layer never lifts off).
     double energySupply(double mass, double extent) const override;
 
-    double omega() const { return omega_; }
-
 private:
     Vec<dim> g0_;
     Vec<dim> direction_;
