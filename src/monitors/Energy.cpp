@@ -1,12 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "forces/BodyAcceleration.hpp"
 #include "monitors/FunctionObject.hpp"
 #include "solver/Reduce.hpp"
 
 namespace mpm {
 
 /// `type: energy`: kinetic Σ ½ m v² (+ rigid bodies' ½ m v² + ½ ωᵀIω), strain Σ ψ V (each
-/// material's stored energy), gravitational -Σ m g·x of particles and bodies (zero at the
-/// origin) and their total [J] (per metre in 2D).
+/// material's stored energy), gravitational and their total [J] (per metre in 2D).
+///
+/// Gravitational: for a constant body acceleration g (constant/g without `type:`, or any
+/// field whose g does not vary) the potential −Σ m g·x of particles and bodies (zero at the
+/// origin). A time-varying g(t) has no potential; the column is then −W, with
+/// W = ∫ Σ m g(t)·v dt the work the field has done on particles and bodies since the start
+/// (State::accelerationWork, accumulated by the solver), so that total = kinetic + strain − W
+/// stays constant for an undamped elastic body. For a constant g the two columns differ only
+/// by the constant −Σ m g·x₀ of the initial state.
 template <int dim> class Energy final : public FunctionObject<dim> {
 public:
     Energy(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {}
@@ -23,15 +31,22 @@ protected:
         const double strain = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
             return s.materials[p.material[i]]->strainEnergy(p, i);
         });
-        const double gravitational = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
-            return -p.mass[i] * s.gravity.dot(p.x[i]);
-        });
-        double bodyKinetic = 0, bodyGravitational = 0;
-        for (const auto& b : s.bodies) {
+        double bodyKinetic = 0;
+        for (const auto& b : s.bodies)
             bodyKinetic += b->kineticEnergy();
-            bodyGravitational -= b->mass() * s.gravity.dot(b->position());
+        const double k = kinetic + bodyKinetic;
+        if (!s.acceleration.isConstant()) {
+            const double g = -s.accelerationWork;
+            return {k, strain, g, k + strain + g};
         }
-        const double k = kinetic + bodyKinetic, g = gravitational + bodyGravitational;
+        const Vec<dim> gravity = s.acceleration.at(s.time);
+        const double gravitational = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
+            return -p.mass[i] * gravity.dot(p.x[i]);
+        });
+        double bodyGravitational = 0;
+        for (const auto& b : s.bodies)
+            bodyGravitational -= b->mass() * gravity.dot(b->position());
+        const double g = gravitational + bodyGravitational;
         return {k, strain, g, k + strain + g};
     }
 };

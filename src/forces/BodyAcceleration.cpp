@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "forces/BodyAcceleration.hpp"
+#include "forces/ConstantAcceleration.hpp"
+
+#include <vector>
+
+namespace mpm {
+
+template <int dim> double BodyAcceleration<dim>::energySupply(double mass, double extent) const {
+    return mass * extent * (maxMagnitude() + totalVariation());
+}
+
+template <int dim>
+std::unique_ptr<BodyAcceleration<dim>> BodyAcceleration<dim>::create(const Dictionary& dict) {
+    // Cases written before `type:` existed have only `value:`: constant.
+    std::unique_ptr<BodyAcceleration> g;
+    if (dict.has("type"))
+        g = BodyAccelerationRegistry<dim>::create(dict);
+    else
+        g = std::make_unique<ConstantAcceleration<dim>>(dict);
+    dict.checkUnknownKeys();
+    return g;
+}
+
+template <int dim>
+std::unique_ptr<BodyAcceleration<dim>> BodyAcceleration<dim>::constant(const Vec<dim>& g) {
+    return std::make_unique<ConstantAcceleration<dim>>(g);
+}
+
+template <int dim>
+Vec<dim> BodyAcceleration<dim>::readVec(const Dictionary& dict, const std::string& key) {
+    const std::vector<double> v = dict.getVector(key, dim);
+    return Eigen::Map<const Vec<dim>>(v.data());
+}
+
+template class BodyAcceleration<2>;
+template class BodyAcceleration<3>;
+
+} // namespace mpm

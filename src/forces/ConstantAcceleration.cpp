@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "forces/ConstantAcceleration.hpp"
+
+namespace mpm {
+
+template <int dim>
+ConstantAcceleration<dim>::ConstantAcceleration(const Dictionary& dict)
+    : g_(BodyAcceleration<dim>::readVec(dict, "value")) {}
+
+template class ConstantAcceleration<2>;
+template class ConstantAcceleration<3>;
+
+MPM_REGISTER(BodyAccelerationRegistry<2>, ConstantAcceleration<2>, "constant");
+MPM_REGISTER(BodyAccelerationRegistry<3>, ConstantAcceleration<3>, "constant");
+
+} // namespace mpm
