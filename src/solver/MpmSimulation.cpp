@@ -26,13 +26,8 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     for (const auto& f : grid_.faces())
         hasOpenFace_ |= f.kind == FaceCondition::Kind::Open;
 
-    if (cs.exists("constant/g")) {
-        const Dictionary g = cs.read("constant/g");
-        const std::vector<double> value = g.getVector("value", dim);
-        for (int d = 0; d < dim; ++d)
-            gravity_[d] = value[d];
-        g.checkUnknownKeys();
-    }
+    acceleration_ = cs.exists("constant/g") ? BodyAcceleration<dim>::create(cs.read("constant/g"))
+                                            : BodyAcceleration<dim>::constant(Vec<dim>::Zero());
 
     const Dictionary mats = cs.read("constant/materials");
     for (const std::string& name : mats.keys())
@@ -76,6 +71,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
 
     const bool fresh = from.empty();
     if (fresh) {
+        gravity_ = acceleration_->at(time.startFrom() == "startTime" ? time.startTime() : 0.0);
         ParticleSeeder<dim> seeder(grid_, materials_, gravity_);
         seeder.seed(case_.read("constant/particles"), particles_);
         preload_ = seeder.preload();
@@ -84,6 +80,9 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         io::readParticles(case_, from, particles_, materials_.size());
         time.readTimeDict(from);
         if (!bodies_.empty()) bodies_.read(case_, from);
+        gravity_ = acceleration_->at(time.value());
+        if (!acceleration_->isConstant())
+            accelerationWork_ = case_.read(from + "/uniform/accelerationWork").getScalar("work");
         log() << "Restart from time " << from << " (" << particles_.size() << " particles)\n";
     }
     buildMaterialLists();
@@ -126,10 +125,20 @@ template <int dim> double MpmSimulation<dim>::energyBudget() const {
     const double strain =
         deterministicSum(n, [&](Index i) { return materials_[p.material[i]]->strainEnergy(p, i); });
     const double mass = deterministicSum(n, [&](Index i) { return p.mass[i]; });
-    double extent = 0;
-    for (int d = 0; d < dim; ++d)
-        extent += std::fabs(gravity_[d]) * (grid_.hi()[d] - grid_.lo()[d]);
-    const double budget = 10.0 * (kinetic + strain + mass * extent + bodies_.energyBudget(extent));
+    double budget = 0;
+    if (acceleration_->isConstant()) {
+        double extent = 0; // Σ |g_d| L_d: the largest drop in potential per unit mass
+        for (int d = 0; d < dim; ++d)
+            extent += std::fabs(gravity_[d]) * (grid_.hi()[d] - grid_.lo()[d]);
+        budget = 10.0 * (kinetic + strain + mass * extent + bodies_.energyBudget(extent));
+    } else { // the work a time-varying g can do (BodyAcceleration::energySupply)
+        double bodyMass = 0;
+        for (const auto& b : bodies_.bodies())
+            if (b->motion() == Motion::Free || b->motion() == Motion::Driven) bodyMass += b->mass();
+        budget =
+            10.0 * (kinetic + strain + bodies_.energyBudget(0.0) +
+                    acceleration_->energySupply(mass + bodyMass, (grid_.hi() - grid_.lo()).norm()));
+    }
     return budget <= 0 || bodies_.driven() ? 1e300 : budget;
 }
 
@@ -205,7 +214,10 @@ template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
 template <int dim> void MpmSimulation<dim>::step(double dt) {
     const double t0 = PhaseTimer::now();
     const bool withBodies = !bodies_.empty() && !preloading_;
+    const bool varyingG = !acceleration_->isConstant() && !preloading_;
+    if (!preloading_) gravity_ = acceleration_->at(time_->value() - 0.5 * dt); // t + Δt/2
     sortAndComputeWeights();
+    const Vec<dim> moment0 = varyingG ? massMoment() : Vec<dim>::Zero();
     if (withBodies) computeCouplingForces(dt);
     particleToGrid();
     order_->afterParticleToGrid(*this, dt); // USF: L, stress and internal force
@@ -217,6 +229,8 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
         pushPointsOutOfBodies(dt);
         checkBodies();
     }
+    // Work of a time-varying g: g(t + Δt/2)·Σ m Δx with the displacements of the step.
+    if (varyingG) accelerationWork_ += gravity_.dot(massMoment() - moment0);
     timer_.stepDone(PhaseTimer::now() - t0);
     if (timer_.steps() % 20 == 0) snapshot();
 }
@@ -327,8 +341,8 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     if (st.kineticEnergy > energyBudget_) {
         std::ostringstream os;
         os << "is the fastest of a kinetic-energy blow-up: E_k = " << st.kineticEnergy
-           << " J exceeds 10× what the initial state and gravity can supply (" << energyBudget_ / 10
-           << " J)";
+           << " J exceeds 10× what the initial state and the body acceleration can supply ("
+           << energyBudget_ / 10 << " J)";
         fail("G2P", fastestParticle(), os.str());
     }
 }
@@ -386,6 +400,19 @@ template <int dim> void MpmSimulation<dim>::checkBodies() {
     // The gap enforcement changed velocities: the CFL speed is taken from the state again, as a
     // restart takes it (a restarted run then steps exactly as an uninterrupted one).
     maxSpeed_ = maxSpeed();
+}
+
+template <int dim> Vec<dim> MpmSimulation<dim>::massMoment() const {
+    // Σ m_p x_p + Σ m_b x_b over the points and the bodies that g moves (free, driven).
+    const Particles<dim>& p = particles_;
+    const Index n = static_cast<Index>(p.size());
+    Vec<dim> moment;
+    for (int d = 0; d < dim; ++d)
+        moment[d] = deterministicSum(n, [&](Index i) { return p.mass[i] * p.x[i][d]; });
+    for (const auto& b : bodies_.bodies())
+        if (b->motion() == Motion::Free || b->motion() == Motion::Driven)
+            moment += b->mass() * b->position();
+    return moment;
 }
 
 template <int dim> double MpmSimulation<dim>::maxSpeed() const {
@@ -501,6 +528,13 @@ template <int dim> void MpmSimulation<dim>::write() {
         *time_,
         [this](const std::filesystem::path& dir) {
             io::writeVtu(dir / "particles.vtu", io::toPointCloud(particles_));
+            if (!acceleration_->isConstant()) {
+                std::ostringstream os;
+                os.precision(17);
+                os << "work: " << accelerationWork_ << "\n";
+                std::filesystem::create_directories(dir / "uniform");
+                io::writeTextAtomic(dir / "uniform" / "accelerationWork", os.str());
+            }
             if (!bodies_.empty()) bodies_.write(dir);
         },
         files);

@@ -4,6 +4,7 @@
 #include "case/Case.hpp"
 #include "case/Time.hpp"
 #include "contact/Coupling.hpp"
+#include "forces/BodyAcceleration.hpp"
 #include "grid/Grid.hpp"
 #include "io/TimeDirectory.hpp"
 #include "materials/Material.hpp"
@@ -74,6 +75,7 @@ private:
     void checkDeltaT() const;
     double energyBudget() const;
     double maxSpeed() const;
+    Vec<dim> massMoment() const;
 
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }
@@ -88,6 +90,9 @@ private:
                 bodies_.bodies(),
                 coupling_ ? coupling_->minimumGapSeen() : 1e300,
                 coupling_ ? coupling_->numContacts() : 0,
+                time_->value(),
+                *acceleration_,
+                accelerationWork_,
                 coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300};
     }
 
@@ -96,7 +101,9 @@ private:
     Time* time_ = nullptr;
 
     Grid<dim> grid_;
-    Vec<dim> gravity_ = Vec<dim>::Zero();
+    std::unique_ptr<BodyAcceleration<dim>> acceleration_; ///< g(t) of constant/g
+    Vec<dim> gravity_ = Vec<dim>::Zero();                 ///< g of this step: g(t + Δt/2)
+    double accelerationWork_ = 0;                         ///< State::accelerationWork [J]
     Particles<dim> particles_;
     Particles<dim> scratch_; ///< reorder buffers, kept between reorders
     std::vector<std::unique_ptr<Material<dim>>> materials_;

@@ -26,7 +26,8 @@ protected:
                ("mpmFoam_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_ / "system");
-        std::ofstream(dir_ / "system/controlDict") << "endTime: 1\ndeltaT: 0.001\nwriteInterval: 10\n";
+        std::ofstream(dir_ / "system/controlDict")
+            << "endTime: 1\ndeltaT: 0.001\nwriteInterval: 10\n";
 
         // Two points of a linear elastic material (K = E / (3 (1 − 2ν)) = 2/3 MPa) under an
         // isotropic pressure, and one rigid disk.
@@ -63,7 +64,7 @@ protected:
         const Time time(cs);
         const Vec<2> gravity = g.at(time.value());
         const State<2> s{p_,    grid_, materials_,   gravity, reactions_, bodies_,
-                         1e300, 0,     time.value(), g,       work};
+                         1e300, 0,     time.value(), g,       work,       1e300};
         auto f = FunctionObjectRegistry<2>::create(
             Dictionary::fromString("type: energy\n", "system/controlDict"), "energy");
         f->prepare(s, time);
