@@ -297,20 +297,21 @@ template <int dim> bool BoundaryConditions<dim>::open(int f, const Vec<dim>& x, 
 
 template <int dim> Index BoundaryConditions<dim>::removeOutflow(Particles<dim>& p, double t) const {
     // Faces with an open patch active now, and the coordinate beyond which a point has left.
-    std::vector<int> faces;
-    std::vector<double> limit;
+    std::array<int, NumFaces> faces{};
+    std::array<double, NumFaces> limit{};
+    std::size_t numOpen = 0;
     for (int f = 0; f < NumFaces; ++f)
         for (const Patch& q : faces_[f].patches)
             if (q.condition->open() && q.active(t)) {
-                faces.push_back(f);
-                limit.push_back(f % 2 == 0 ? grid_.lo()[f / 2] - grid_.h()
-                                           : grid_.hi()[f / 2] + grid_.h());
+                faces[numOpen] = f;
+                limit[numOpen++] =
+                    f % 2 == 0 ? grid_.lo()[f / 2] - grid_.h() : grid_.hi()[f / 2] + grid_.h();
                 break;
             }
-    if (faces.empty()) return 0;
+    if (numOpen == 0) return 0;
     auto outside = [&](Index i) {
         const Vec<dim>& x = p.x[i];
-        for (std::size_t k = 0; k < faces.size(); ++k) {
+        for (std::size_t k = 0; k < numOpen; ++k) {
             const int f = faces[k];
             const bool beyond = f % 2 == 0 ? x[f / 2] < limit[k] : x[f / 2] > limit[k];
             if (beyond && open(f, x, t)) return true;

@@ -116,8 +116,8 @@ void PeriodicLattice<dim>::fold(Grid<dim>& g, const std::vector<Index>& activeBl
 
 template <int dim> void PeriodicLattice<dim>::closeActiveBlocks(std::vector<Index>& blocks) {
     if (!any_) return;
-    std::vector<Index> closed;
-    closed.reserve(blocks.size() + blocks.size() / 2);
+    std::vector<Index>& closed = closed_; // keeps its memory between steps
+    closed.clear();
     for (Index b : blocks) {
         IVec<dim> c;
         Index r = b;

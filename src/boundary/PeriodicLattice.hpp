@@ -89,7 +89,8 @@ private:
     /// Per axis and block coordinate c: the block coordinates holding a node of the same
     /// class as a node of block c (c included).
     std::array<std::vector<std::vector<int>>, dim> related_;
-    std::vector<char> mark_; ///< closeActiveBlocks scratch
+    std::vector<char> mark_;    ///< closeActiveBlocks scratch
+    std::vector<Index> closed_; ///< closeActiveBlocks scratch
 };
 
 } // namespace mpm
