@@ -11,11 +11,11 @@ template <int dim>
 PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bool, dim>& periodic)
     : n_(grid.nodes()), periodic_(periodic), lo_(grid.lo()), hi_(grid.hi()),
       period_(Vec<dim>::Zero()), nb_(grid.blocks()) {
-    constexpr int Pad = Grid<dim>::Pad;
-    constexpr int BS = Grid<dim>::BlockSize;
+    constexpr int pad = Grid<dim>::Pad;
+    constexpr int bs = Grid<dim>::BlockSize;
     for (int d = 0; d < dim; ++d) {
         stride_[d] = grid.stride(d);
-        cells_[d] = n_[d] - 1 - 2 * Pad;
+        cells_[d] = n_[d] - 1 - 2 * pad;
         if (periodic_[d]) period_[d] = hi_[d] - lo_[d];
         any_ |= periodic_[d];
     }
@@ -28,12 +28,12 @@ PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bo
             std::vector<int>& r = related_[d][c];
             r.push_back(c);
             if (!periodic_[d]) continue;
-            for (int i = c * BS; i < std::min((c + 1) * BS, n_[d]); ++i) {
+            for (int i = c * bs; i < std::min((c + 1) * bs, n_[d]); ++i) {
                 const int o = ownerCoord(d, i);
                 for (int j = o; j >= 0; j -= cells_[d])
-                    r.push_back(j / BS);
+                    r.push_back(j / bs);
                 for (int j = o + cells_[d]; j < n_[d]; j += cells_[d])
-                    r.push_back(j / BS);
+                    r.push_back(j / bs);
             }
             std::sort(r.begin(), r.end());
             r.erase(std::unique(r.begin(), r.end()), r.end());
@@ -46,7 +46,7 @@ PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bo
     auto blockOfNode = [&](const IVec<dim>& c) {
         Index b = 0;
         for (int d = dim - 1; d >= 0; --d)
-            b = b * nb_[d] + c[d] / BS;
+            b = b * nb_[d] + c[d] / bs;
         return b;
     };
     imageStart_.assign(numBlocks + 1, 0);
@@ -86,10 +86,9 @@ PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bo
 
 template <int dim> int PeriodicLattice<dim>::ownerCoord(int axis, int i) const {
     if (!periodic_[axis]) return i;
-    constexpr int Pad = Grid<dim>::Pad;
-    const int P = cells_[axis];
-    const int r = ((i - Pad) % P + P) % P;
-    return Pad + r;
+    constexpr int pad = Grid<dim>::Pad;
+    const int cells = cells_[axis];
+    return pad + ((i - pad) % cells + cells) % cells;
 }
 
 template <int dim> Index PeriodicLattice<dim>::owner(Index k) const {
@@ -150,8 +149,8 @@ template <int dim> void PeriodicLattice<dim>::closeActiveBlocks(std::vector<Inde
 template <int dim> Vec<dim> PeriodicLattice<dim>::wrapPosition(Vec<dim> x) const {
     for (int d = 0; d < dim; ++d) {
         if (!periodic_[d] || (x[d] >= lo_[d] && x[d] < hi_[d])) continue;
-        const double L = period_[d];
-        x[d] -= L * std::floor((x[d] - lo_[d]) / L);
+        const double length = period_[d];
+        x[d] -= length * std::floor((x[d] - lo_[d]) / length);
         // Rounding can land a point just below lo on hi itself, the same node as lo.
         if (!(x[d] >= lo_[d] && x[d] < hi_[d])) x[d] = lo_[d];
     }
