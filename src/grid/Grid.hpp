@@ -12,7 +12,9 @@
 
 namespace mpm {
 
-/// Boundary condition of one face of the grid box (`constant/grid` boundary.<face>).
+/// Boundary condition of one face of the grid box (`constant/grid` boundary.<face>), legacy
+/// syntax only. Superseded by boundary/BoundaryConditions: delete it, faces(), faces_ and the
+/// parsing in Grid.cpp once the solver uses BoundaryConditions.
 struct FaceCondition {
     enum class Kind { NoSlip, Slip, Friction, Open };
     Kind kind = Kind::NoSlip;

@@ -1,0 +1,339 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "boundary/BoundaryConditions.hpp"
+#include "core/Parallel.hpp"
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+namespace mpm {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string s;
+    for (const auto& n : names)
+        s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+template <int dim> std::string point(const Vec<dim>& x) {
+    std::ostringstream os;
+    os << '(';
+    for (int d = 0; d < dim; ++d)
+        os << (d ? ", " : "") << x[d];
+    os << ')';
+    return os.str();
+}
+
+} // namespace
+
+template <int dim>
+BoundaryConditions<dim>::BoundaryConditions(const Dictionary& gridDict, const Grid<dim>& grid)
+    : grid_(grid),
+      slip_(BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", "(default)"))) {
+    const Dictionary boundary = gridDict.has("boundary")
+                                    ? gridDict.subDict("boundary")
+                                    : Dictionary::fromString("{}", gridDict.fileName());
+    std::array<std::optional<Dictionary>, NumFaces> faceDicts;
+    for (int f = 0; f < NumFaces; ++f) {
+        readFace(boundary, f);
+        const std::string key = Grid<dim>::faceName(f);
+        if (boundary.isDict(key)) faceDicts[f] = boundary.subDict(key);
+    }
+    boundary.checkUnknownKeys();
+
+    std::array<bool, dim> periodic{};
+    for (int a = 0; a < dim; ++a) {
+        const bool lo = faces_[2 * a].periodic, hi = faces_[2 * a + 1].periodic;
+        if (lo != hi) {
+            const std::string p = Grid<dim>::faceName(lo ? 2 * a : 2 * a + 1);
+            const std::string q = Grid<dim>::faceName(lo ? 2 * a + 1 : 2 * a);
+            boundary.error(p, p + " is periodic but " + q +
+                                  " is not: periodic faces come in pairs (" +
+                                  Grid<dim>::faceName(2 * a) + ": periodic, " +
+                                  Grid<dim>::faceName(2 * a + 1) + ": periodic)");
+        }
+        periodic[a] = lo;
+    }
+    lattice_ = std::make_unique<PeriodicLattice<dim>>(grid, periodic);
+
+    for (int f = 0; f < NumFaces; ++f)
+        if (!faces_[f].periodic) assignNodes(faceDicts[f] ? &*faceDicts[f] : nullptr, f);
+    touched_.assign(grid.numNodes(), 0);
+}
+
+template <int dim>
+typename BoundaryConditions<dim>::Patch
+BoundaryConditions<dim>::wordPatch(const Dictionary& parent, const std::string& key) const {
+    const std::string type = parent.getString(key);
+    const auto& table = BoundaryConditionRegistry<dim>::table();
+    if (table.find(type) == table.end())
+        parent.error(key, "unknown type '" + type +
+                              "'; valid types are: " + joined(BoundaryCondition<dim>::typeNames()));
+    Patch p;
+    p.name = key;
+    try {
+        p.condition = BoundaryCondition<dim>::create(
+            Dictionary::fromString("{type: " + type + "}", parent.fileName()));
+    } catch (const InputError& e) {
+        parent.error(key, "type '" + type + "' needs parameters (" + e.key() +
+                              "); write it as a map: {type: " + type + ", " + e.key() + ": …}");
+    }
+    return p;
+}
+
+template <int dim>
+typename BoundaryConditions<dim>::Patch
+BoundaryConditions<dim>::readPatch(const Dictionary& dict, const std::string& name, int f,
+                                   bool whole) const {
+    const int axis = f / 2;
+    Patch p;
+    p.name = name;
+    p.condition = BoundaryCondition<dim>::create(dict);
+    if (dict.has("box")) {
+        if (whole)
+            dict.error("box", "a face map with `type` is one patch covering the whole face; to "
+                              "limit a condition to a box, name the face's patches: {<name>: "
+                              "{type: …, box: {min: […], max: […]}}, …}");
+        const Dictionary b = dict.subDict("box");
+        const std::vector<double> lo = b.getVector("min", dim), hi = b.getVector("max", dim);
+        b.checkUnknownKeys();
+        for (int d = 0; d < dim; ++d) {
+            p.boxMin[d] = lo[d];
+            p.boxMax[d] = hi[d];
+            if (d != axis && !(hi[d] >= lo[d]))
+                b.error("max", "the box's max must not be below its min along the face");
+        }
+        p.boxed = true;
+    }
+    p.from = dict.getScalarOr("from", p.from);
+    p.until = dict.getScalarOr("until", p.until);
+    if (!(p.until > p.from))
+        dict.error("until", "the window [from, until) is empty: until must exceed from");
+    if (p.condition->periodic() && (!whole || p.boxed || dict.has("from") || dict.has("until")))
+        dict.error("type", "periodic acts on a whole face, always: write " +
+                               Grid<dim>::faceName(f) +
+                               ": periodic (and its opposite face "
+                               "periodic too), without box or window");
+    dict.checkUnknownKeys();
+    return p;
+}
+
+template <int dim> void BoundaryConditions<dim>::readFace(const Dictionary& boundary, int f) {
+    const std::string key = Grid<dim>::faceName(f);
+    Face& face = faces_[f];
+    if (!boundary.has(key)) {
+        Patch p;
+        p.name = key;
+        p.condition = BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", ""));
+        face.patches.push_back(std::move(p));
+    } else if (!boundary.isDict(key)) {
+        face.patches.push_back(wordPatch(boundary, key));
+    } else {
+        const Dictionary d = boundary.subDict(key);
+        if (d.has("type")) {
+            face.patches.push_back(readPatch(d, key, f, true));
+        } else {
+            const std::vector<std::string> names = d.keys();
+            if (names.empty())
+                boundary.error(key, "no condition: write a type (" + key +
+                                        ": slip) or named patches ({wall: {type: noSlip}, …})");
+            std::optional<Patch> rest;
+            std::vector<Patch> boxed;
+            for (const std::string& name : names) {
+                Patch p = d.isDict(name) ? readPatch(d.subDict(name), name, f, false)
+                                         : wordPatch(d, name);
+                if (p.condition->periodic())
+                    d.error(name, "periodic acts on a whole face, always: write " + key +
+                                      ": periodic (and its opposite face periodic too)");
+                if (p.boxed) {
+                    boxed.push_back(std::move(p));
+                } else if (rest) {
+                    d.error(name, "patches '" + rest->name + "' and '" + name + "' of " + key +
+                                      " both have no box: at most one patch of a face covers "
+                                      "the rest of it; give the others a box");
+                } else {
+                    rest = std::move(p);
+                }
+            }
+            if (!rest) {
+                rest.emplace();
+                rest->name = key;
+                rest->condition =
+                    BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", ""));
+            }
+            face.patches.push_back(std::move(*rest));
+            for (auto& p : boxed)
+                face.patches.push_back(std::move(p));
+        }
+    }
+    for (const Patch& p : face.patches)
+        hasOpen_ |= p.condition->open();
+    face.periodic = face.patches.front().condition->periodic();
+}
+
+template <int dim> void BoundaryConditions<dim>::assignNodes(const Dictionary* faceDict, int f) {
+    const int axis = f / 2;
+    Face& face = faces_[f];
+    const std::size_t numPatches = face.patches.size();
+    const double tol = 1e-6 * grid_.h();
+    const IVec<dim> n = grid_.nodes();
+    std::vector<std::vector<Index>> owners(numPatches), images(numPatches);
+    std::vector<bool> seen(numPatches, false);
+    for (Index k : grid_.faceNodes(f)) {
+        // Tangential position of the node's owner (images follow their owners).
+        IVec<dim> c;
+        for (int d = 0; d < dim; ++d)
+            c[d] = lattice_->ownerCoord(d, static_cast<int>((k / grid_.stride(d)) % n[d]));
+        const Vec<dim> x = grid_.nodePosition(c);
+        std::size_t in = 0;
+        for (std::size_t q = 1; q < numPatches; ++q) {
+            const Patch& p = face.patches[q];
+            bool inside = true;
+            for (int d = 0; d < dim; ++d)
+                if (d != axis && (x[d] < p.boxMin[d] - tol || x[d] > p.boxMax[d] + tol))
+                    inside = false;
+            if (!inside) continue;
+            if (in != 0) {
+                MPM_ASSERT(faceDict);
+                faceDict->error(p.name, "patches '" + face.patches[in].name + "' and '" + p.name +
+                                            "' of " + Grid<dim>::faceName(f) +
+                                            " overlap: both boxes hold the node at " +
+                                            point<dim>(x) +
+                                            "; boxed patches of one face must not share a node");
+            }
+            in = q;
+        }
+        Patch& p = face.patches[in];
+        if (lattice_->isOwner(k)) {
+            owners[in].push_back(k);
+            if (!seen[in]) p.extentMin = p.extentMax = x;
+            seen[in] = true;
+            p.extentMin = p.extentMin.cwiseMin(x);
+            p.extentMax = p.extentMax.cwiseMax(x);
+        } else {
+            images[in].push_back(k);
+        }
+    }
+    for (std::size_t q = 0; q < numPatches; ++q) {
+        Patch& p = face.patches[q];
+        if (q > 0 && owners[q].empty()) {
+            MPM_ASSERT(faceDict);
+            faceDict->error(p.name, "the box of patch '" + p.name + "' holds no node of face " +
+                                        Grid<dim>::faceName(f) + " (cell size " +
+                                        std::to_string(grid_.h()) +
+                                        " m; the box's coordinates along the face decide)");
+        }
+        p.nodes = std::move(owners[q]);
+        p.owners = static_cast<Index>(p.nodes.size());
+        p.nodes.insert(p.nodes.end(), images[q].begin(), images[q].end());
+    }
+}
+
+template <int dim>
+const BoundaryCondition<dim>& BoundaryConditions<dim>::governing(const Face& face, std::size_t k,
+                                                                 double t) const {
+    const Patch& p = face.patches[k];
+    if (p.active(t)) return *p.condition;
+    if (k > 0 && face.patches.front().active(t)) return *face.patches.front().condition;
+    return *slip_;
+}
+
+template <int dim>
+void BoundaryConditions<dim>::constrain(const Grid<dim>& g, std::vector<Vec<dim>>& v,
+                                        double t) const {
+    for (int f = 0; f < NumFaces; ++f) {
+        const Face& face = faces_[f];
+        if (face.periodic) continue;
+        const FaceNormal normal{f / 2, f % 2 == 0 ? -1.0 : 1.0};
+        for (std::size_t k = 0; k < face.patches.size(); ++k) {
+            const Patch& p = face.patches[k];
+            governing(face, k, t).constrain({&p.nodes, p.owners}, normal, g.mass, v, t);
+        }
+    }
+}
+
+template <int dim>
+void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& gravity, double t,
+                                              double dt, Reactions& reactions) {
+    for (const Face& face : faces_)
+        for (const Patch& p : face.patches)
+            for (Index i : p.nodes)
+                touched_[i] = 0;
+    const NodeState<dim> state{g.mass, g.vOld, g.force};
+    for (int f = 0; f < NumFaces; ++f) {
+        Face& face = faces_[f];
+        Vec<dim> reaction = Vec<dim>::Zero();
+        if (!face.periodic) {
+            const FaceNormal normal{f / 2, f % 2 == 0 ? -1.0 : 1.0};
+            for (std::size_t k = 0; k < face.patches.size(); ++k) {
+                Patch& p = face.patches[k];
+                p.reaction = governing(face, k, t)
+                                 .constrainUpdate({&p.nodes, p.owners}, normal, state, g.v, gravity,
+                                                  t, dt, touched_);
+                reaction += p.reaction;
+            }
+        }
+        reactions[f] = reaction;
+    }
+}
+
+template <int dim> bool BoundaryConditions<dim>::open(int f, const Vec<dim>& x, double t) const {
+    const int axis = f / 2;
+    const double h = grid_.h();
+    const Vec<dim> y = lattice_->wrapPosition(x);
+    for (const Patch& p : faces_[f].patches) {
+        if (!p.condition->open() || !p.active(t)) continue;
+        if (!p.boxed) return true;
+        bool inside = true;
+        for (int d = 0; d < dim; ++d)
+            if (d != axis && (y[d] < p.extentMin[d] - h || y[d] > p.extentMax[d] + h))
+                inside = false;
+        if (inside) return true;
+    }
+    return false;
+}
+
+template <int dim> Index BoundaryConditions<dim>::removeOutflow(Particles<dim>& p, double t) const {
+    // Faces with an open patch active now, and the coordinate beyond which a point has left.
+    std::array<int, NumFaces> faces{};
+    std::array<double, NumFaces> limit{};
+    std::size_t numOpen = 0;
+    for (int f = 0; f < NumFaces; ++f)
+        for (const Patch& q : faces_[f].patches)
+            if (q.condition->open() && q.active(t)) {
+                faces[numOpen] = f;
+                limit[numOpen++] =
+                    f % 2 == 0 ? grid_.lo()[f / 2] - grid_.h() : grid_.hi()[f / 2] + grid_.h();
+                break;
+            }
+    if (numOpen == 0) return 0;
+    auto outside = [&](Index i) {
+        const Vec<dim>& x = p.x[i];
+        for (std::size_t k = 0; k < numOpen; ++k) {
+            const int f = faces[k];
+            const bool beyond = f % 2 == 0 ? x[f / 2] < limit[k] : x[f / 2] > limit[k];
+            if (beyond && open(f, x, t)) return true;
+        }
+        return false;
+    };
+    const Index n = static_cast<Index>(p.size());
+    Index anyOut = 0;
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : anyOut)
+    for (Index i = 0; i < n; ++i)
+        anyOut += outside(i);
+    if (anyOut == 0) return 0;
+    std::vector<Index> keep;
+    keep.reserve(n);
+    for (Index i = 0; i < n; ++i)
+        if (!outside(i)) keep.push_back(i);
+    if (keep.empty()) throw RunError("every particle has left the domain through open faces");
+    p.permute(keep);
+    return n - static_cast<Index>(keep.size());
+}
+
+template class BoundaryConditions<2>;
+template class BoundaryConditions<3>;
+
+} // namespace mpm

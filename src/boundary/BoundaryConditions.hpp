@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "boundary/BoundaryCondition.hpp"
+#include "boundary/PeriodicLattice.hpp"
+#include "case/Dictionary.hpp"
+#include "grid/Grid.hpp"
+#include "particles/Particles.hpp"
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm {
+
+/// The boundary conditions of the grid box (`constant/grid` boundary), built once from the
+/// dictionary and the Grid.
+///
+/// Each of the 2·dim faces holds either one condition for the whole face (`xMin: slip`,
+/// `xMin: {type: friction, friction: 0.3}`) or named patches (`yMin: {wall: {type: noSlip},
+/// orifice: {type: open, box: {min, max}, from: 0.5}}`). A patch acts on the face's nodes —
+/// those on the face and in the Pad ghost layers beyond it (Grid::faceNodes) — whose
+/// tangential coordinates lie in its `box` (the box's normal coordinate is ignored: the
+/// ghost layers belong to the face); at most one patch of a face has no box and takes the
+/// nodes no box selects; boxed patches must not share a node. Outside its time window
+/// [from, until) a patch is inactive and its nodes obey the face's box-less patch, or slip if
+/// there is none (or if that one is inactive too). Nodes no patch selects obey slip.
+///
+/// Periodic faces (`xMin: periodic` with `xMax: periodic`) constrain nothing; the lattice
+/// along that axis is made seamless by PeriodicLattice (fold, closed active blocks, particle
+/// wrap). Along a periodic tangential axis, a box is tested on the owner node's coordinate,
+/// so images follow their owners, and only owner nodes count in the reactions.
+template <int dim> class BoundaryConditions {
+public:
+    static constexpr int NumFaces = 2 * dim;
+    using Reactions = std::array<Vec<dim>, NumFaces>;
+
+    /// Reads `gridDict`'s optional `boundary` map (every face slip without it) and checks it.
+    BoundaryConditions(const Dictionary& gridDict, const Grid<dim>& grid);
+
+    /// Constrain the P2G velocity v (g.vOld) at time t (the start of the step, tⁿ).
+    void constrain(const Grid<dim>& g, std::vector<Vec<dim>>& v, double t) const;
+    /// Constrain the updated velocity g.v at time t (the end of the step, tⁿ⁺¹) and store each
+    /// face's reaction, F_f = Σ m_i (v_i⁻ − v_i⁺)/Δt over its owner nodes [N] (per metre in
+    /// 2D), in `reactions` (zero on open and periodic faces); faces act in the order xMin,
+    /// xMax, yMin, …, and the first face acting on a node measures from the undamped update
+    /// v⁰ + Δt (f/m + g), later ones from what is left. `gravity` g [m/s²].
+    void constrainUpdate(Grid<dim>& g, const Vec<dim>& gravity, double t, double dt,
+                         Reactions& reactions);
+
+    /// Remove the particles more than one cell beyond an open patch active at time t,
+    /// keeping the order of the others; returns how many left. Throws RunError if none is
+    /// left.
+    Index removeOutflow(Particles<dim>& p, double t) const;
+    /// True if a point beyond face f (outside the box along its axis) lies under an open
+    /// patch active at time t: a box-less open patch, or within one cell (tangentially) of
+    /// the nodes of a boxed one. removeOutflow applies it to points more than one cell out.
+    bool open(int face, const Vec<dim>& x, double t) const;
+    /// Some patch is open (at some time): removeOutflow has work to do.
+    bool hasOpen() const { return hasOpen_; }
+
+    bool periodic(int axis) const { return lattice_->periodic(axis); }
+    bool anyPeriodic() const { return lattice_->any(); }
+    const PeriodicLattice<dim>& lattice() const { return *lattice_; }
+    /// PeriodicLattice::fold, foldField, closeActiveBlocks, wrap, wrapPosition, separation
+    /// (all no-ops or identities without periodic faces).
+    void fold(Grid<dim>& g, const std::vector<Index>& activeBlocks,
+              unsigned fields = FoldAll) const {
+        lattice_->fold(g, activeBlocks, fields);
+    }
+    template <class T>
+    void foldField(std::vector<T>& q, const std::vector<Index>& activeBlocks) const {
+        lattice_->foldField(q, activeBlocks);
+    }
+    void closeActiveBlocks(std::vector<Index>& blocks) { lattice_->closeActiveBlocks(blocks); }
+    void wrap(Particles<dim>& p) const { lattice_->wrap(p); }
+    Vec<dim> wrapPosition(const Vec<dim>& x) const { return lattice_->wrapPosition(x); }
+    Vec<dim> separation(const Vec<dim>& a, const Vec<dim>& b) const {
+        return lattice_->separation(a, b);
+    }
+
+    /// Patches of face f: patch 0 takes the nodes no box selects (the box-less patch, named
+    /// after the face when it is the whole face or implicit slip); the boxed ones follow in
+    /// file order.
+    int numPatches(int f) const { return static_cast<int>(faces_[f].patches.size()); }
+    const std::string& patchName(int f, int k) const { return faces_[f].patches[k].name; }
+    /// Nodes of patch k of face f: owners first, then periodic images.
+    const std::vector<Index>& patchNodes(int f, int k) const { return faces_[f].patches[k].nodes; }
+    /// True if patch k of face f is active at time t (from ≤ t < until).
+    bool active(int f, int k, double t) const { return faces_[f].patches[k].active(t); }
+    /// Reaction of the last constrainUpdate through patch k of face f (whichever condition
+    /// governed its nodes) [N].
+    const Vec<dim>& patchReaction(int f, int k) const { return faces_[f].patches[k].reaction; }
+
+private:
+    struct Patch {
+        std::string name;
+        std::unique_ptr<BoundaryCondition<dim>> condition;
+        bool boxed = false;
+        Vec<dim> boxMin = Vec<dim>::Zero(), boxMax = Vec<dim>::Zero();
+        Vec<dim> extentMin = Vec<dim>::Zero(), extentMax = Vec<dim>::Zero(); ///< its nodes
+        double from = -std::numeric_limits<double>::infinity();
+        double until = std::numeric_limits<double>::infinity();
+        std::vector<Index> nodes; ///< owners first, then images
+        Index owners = 0;
+        Vec<dim> reaction = Vec<dim>::Zero();
+        bool active(double t) const { return from <= t && t < until; }
+    };
+    struct Face {
+        std::vector<Patch> patches; ///< [0]: the box-less patch (implicit slip if none given)
+        bool periodic = false;
+    };
+
+    void readFace(const Dictionary& boundary, int f);
+    Patch readPatch(const Dictionary& dict, const std::string& name, int f, bool whole) const;
+    Patch wordPatch(const Dictionary& parent, const std::string& key) const;
+    void assignNodes(const Dictionary* faceDict, int f);
+    /// The condition governing patch k of face f at time t.
+    const BoundaryCondition<dim>& governing(const Face& face, std::size_t k, double t) const;
+
+    const Grid<dim>& grid_;
+    std::array<Face, NumFaces> faces_;
+    std::unique_ptr<BoundaryCondition<dim>> slip_;  ///< fallback
+    std::unique_ptr<PeriodicLattice<dim>> lattice_; ///< built once the faces are read
+    bool hasOpen_ = false;
+    std::vector<char> touched_;
+};
+
+} // namespace mpm

@@ -1,0 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "boundary/NoSlip.hpp"
+
+namespace mpm {
+
+MPM_REGISTER(BoundaryConditionRegistry<2>, NoSlip<2>, "noSlip");
+MPM_REGISTER(BoundaryConditionRegistry<3>, NoSlip<3>, "noSlip");
+
+} // namespace mpm

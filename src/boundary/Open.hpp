@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "boundary/BoundaryCondition.hpp"
+
+namespace mpm {
+
+/// `type: open`: no constraint and no reaction; a particle more than one cell beyond an
+/// active open patch has left the domain and is removed (BoundaryConditions::removeOutflow).
+template <int dim> class Open final : public BoundaryCondition<dim> {
+public:
+    explicit Open(const Dictionary&) {}
+    void constrain(const PatchNodes&, const FaceNormal&, const std::vector<double>&,
+                   std::vector<Vec<dim>>&, double) const override {}
+    Vec<dim> constrainUpdate(const PatchNodes&, const FaceNormal&, const NodeState<dim>&,
+                             std::vector<Vec<dim>>&, const Vec<dim>&, double, double,
+                             std::vector<char>&) const override {
+        return Vec<dim>::Zero();
+    }
+    bool open() const override { return true; }
+};
+
+} // namespace mpm
