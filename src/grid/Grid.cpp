@@ -11,31 +11,6 @@ template <int dim> std::string Grid<dim>::faceName(int f) {
     return std::string(1, axes[f / 2]) + (f % 2 == 0 ? "Min" : "Max");
 }
 
-namespace {
-
-FaceCondition readFace(const Dictionary& boundary, const std::string& key) {
-    static const std::vector<std::string> kinds{"noSlip", "slip", "friction", "open"};
-    FaceCondition c;
-    std::string type;
-    if (boundary.isDict(key)) {
-        const Dictionary d = boundary.subDict(key);
-        type = d.getWord("type", kinds);
-        if (type == "friction") c.friction = d.getScalar("friction", Bounds::nonNegative());
-        d.checkUnknownKeys();
-    } else {
-        type = boundary.getWordOr(key, "slip", kinds);
-        if (type == "friction")
-            boundary.error(key, "friction needs a coefficient: {type: friction, friction: 0.3}");
-    }
-    c.kind = type == "noSlip"     ? FaceCondition::Kind::NoSlip
-             : type == "slip"     ? FaceCondition::Kind::Slip
-             : type == "friction" ? FaceCondition::Kind::Friction
-                                  : FaceCondition::Kind::Open;
-    return c;
-}
-
-} // namespace
-
 template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
     h_ = dict.getScalar("cellSize", Bounds::positive());
     invH_ = 1.0 / h_;
@@ -71,13 +46,6 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
     }
     if (numNodes_ > Index(400) * 1000 * 1000)
         dict.error("cellSize", "the grid would have more than 4e8 nodes");
-
-    const Dictionary boundary = dict.has("boundary")
-                                    ? dict.subDict("boundary")
-                                    : Dictionary::fromString("{}", dict.fileName());
-    for (int f = 0; f < NumFaces; ++f)
-        faces_[f] = readFace(boundary, faceName(f));
-    boundary.checkUnknownKeys();
 
     // Nodes on or beyond each face: layers 0..Pad on the low side, n-1-Pad..n-1 on the high side.
     for (int f = 0; f < NumFaces; ++f) {

@@ -12,15 +12,6 @@
 
 namespace mpm {
 
-/// Boundary condition of one face of the grid box (`constant/grid` boundary.<face>), legacy
-/// syntax only. Superseded by boundary/BoundaryConditions: delete it, faces(), faces_ and the
-/// parsing in Grid.cpp once the solver uses BoundaryConditions.
-struct FaceCondition {
-    enum class Kind { NoSlip, Slip, Friction, Open };
-    Kind kind = Kind::NoSlip;
-    double friction = 0.0; ///< Coulomb coefficient μ for Kind::Friction [-]
-};
-
 /// Uniform background grid over the box [lo, hi], padded by `Pad` cells of ghost nodes on each
 /// side so that every kernel's stencil stays inside the arrays for points within one cell of the
 /// box. Node arrays are dense, x fastest. Nodes are grouped in blocks of 4^dim for the
@@ -101,9 +92,6 @@ public:
         }
     }
 
-    const std::array<FaceCondition, NumFaces>& faces() const {
-        return faces_;
-    }
     static std::string faceName(int f);
     /// Nodes on or outside face f (within the ghost layers): the nodes its condition acts on.
     const std::vector<Index>& faceNodes(int f) const {
@@ -123,7 +111,6 @@ private:
     IVec<dim> n_, nb_;
     std::array<Index, dim> stride_{};
     Index numNodes_ = 0, numBlocks_ = 0;
-    std::array<FaceCondition, NumFaces> faces_;
     std::array<std::vector<Index>, NumFaces> faceNodes_;
 };
 

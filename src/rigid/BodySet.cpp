@@ -76,7 +76,9 @@ template <int dim> void BodySet<dim>::advance(double dt, double t, const Vec<dim
     }
 }
 
-template <int dim> std::string BodySet<dim>::check(const Grid<dim>& grid) const {
+template <int dim>
+std::string BodySet<dim>::check(const Grid<dim>& grid,
+                                const std::function<bool(int, const Vec<dim>&)>& open) const {
     for (const auto& b : bodies_) {
         if (!std::isfinite(b->position().sum()) || !std::isfinite(b->velocity().sum()))
             return "rigid body '" + b->name() + "' has a non-finite state";
@@ -85,7 +87,7 @@ template <int dim> std::string BodySet<dim>::check(const Grid<dim>& grid) const 
             const int a = f / 2;
             const bool beyond = f % 2 == 0 ? b->position()[a] < grid.lo()[a] - r
                                            : b->position()[a] > grid.hi()[a] + r;
-            if (beyond && grid.faces()[f].kind != FaceCondition::Kind::Open)
+            if (beyond && !open(f, b->position()))
                 return "rigid body '" + b->name() + "' has passed through the grid face " +
                        Grid<dim>::faceName(f) + " (bodies do not collide with the walls)";
         }

@@ -8,6 +8,7 @@
 #include "rigid/RigidBody.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -48,7 +49,9 @@ public:
     /// A body whose state is not finite or which has passed through a walled grid face (bodies
     /// do not collide with the walls; one leaving through an open face flies on): what is
     /// wrong, or empty.
-    std::string check(const Grid<dim>& grid) const;
+    /// `open(face, x)`: whether face `face` lets a body at x through.
+    std::string check(const Grid<dim>& grid,
+                      const std::function<bool(int, const Vec<dim>&)>& open) const;
     /// Largest rim speed |v| + |ω| R of a moving body [m/s] (the CFL counts bodies too).
     double maxRimSpeed() const;
     /// True if a prescribed or driven body can do unbounded work on the material.

@@ -17,14 +17,12 @@ namespace mpm {
 template <int dim>
 MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
                                   const Dictionary& gridDict)
-    : case_(cs), options_(options), grid_(gridDict), bodies_(cs, grid_),
+    : case_(cs), options_(options), grid_(gridDict), bc_(gridDict, grid_), bodies_(cs, grid_),
       writer_(cs, bodies_.empty() ? std::vector<std::string>{"particles"}
                                   : std::vector<std::string>{"particles", "rigidBodies"}) {
     gridDict.checkUnknownKeys();
     for (auto& r : reactions_)
         r.setZero();
-    for (const auto& f : grid_.faces())
-        hasOpenFace_ |= f.kind == FaceCondition::Kind::Open;
 
     acceleration_ = cs.exists("constant/g") ? BodyAcceleration<dim>::create(cs.read("constant/g"))
                                             : BodyAcceleration<dim>::constant(Vec<dim>::Zero());
@@ -47,8 +45,12 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     const Dictionary schemes = cs.read("system/mpmSchemes");
     order_ = StressUpdateOrder::create(schemes);
     damping_ = schemes.getScalarOr("damping", 0.0, Bounds::halfOpen(0.0, 1.0));
-    if (schemes.getWordOr("antiLocking", "none", {"none", "fBar"}) == "fBar")
+    if (schemes.getWordOr("antiLocking", "none", {"none", "fBar"}) == "fBar") {
         fBar_ = std::make_unique<FBar<dim>>();
+        if (bc_.anyPeriodic())
+            fBar_->setNodalFold(
+                [this](std::vector<double>& q) { bc_.foldField(q, activeBlocks_); });
+    }
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
@@ -74,6 +76,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         gravity_ = acceleration_->at(time.startFrom() == "startTime" ? time.startTime() : 0.0);
         ParticleSeeder<dim> seeder(grid_, materials_, gravity_);
         seeder.seed(case_.read("constant/particles"), particles_);
+        bc_.wrap(particles_);
         preload_ = seeder.preload();
         time.setStart(time.startFrom() == "startTime" ? time.startTime() : 0.0, 0, 0.0);
     } else {
@@ -213,6 +216,7 @@ template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
 
 template <int dim> void MpmSimulation<dim>::step(double dt) {
     const double t0 = PhaseTimer::now();
+    dt_ = dt;
     const bool withBodies = !bodies_.empty() && !preloading_;
     const bool varyingG = !acceleration_->isConstant() && !preloading_;
     if (!preloading_) gravity_ = acceleration_->at(time_->value() - 0.5 * dt); // t + Δt/2
@@ -237,7 +241,13 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
 
 template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
     auto timer = timer_(PhaseTimer::Sort);
-    if (hasOpenFace_) removeOutflow();
+    const double t = preloading_ ? time_->value() : time_->value() - dt_;
+    bc_.wrap(particles_); // periodic faces: back across the seam
+    if (bc_.hasOpen())
+        if (const Index left = bc_.removeOutflow(particles_, t)) {
+            buildMaterialLists();
+            removed_ += left;
+        }
     const Index outside = sort_.update(particles_, grid_);
     if (outside >= 0) fail("sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
@@ -268,9 +278,12 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         grid_.v[i].setZero();
     });
     activeBlocks_ = sort_.activeNodeBlocks();
+    bc_.closeActiveBlocks(activeBlocks_);
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
+    // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
+    bc_.fold(grid_, activeBlocks_, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
 }
 
 template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
@@ -279,7 +292,7 @@ template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
         const double m = grid_.mass[node];
         grid_.vOld[node] = m > 0 ? Vec<dim>(grid_.momentum[node] / m) : Vec<dim>::Zero();
     });
-    applyBoundaryConditions(false, 0.0);
+    bc_.constrain(grid_, grid_.vOld, time_->value() - dt_);
 }
 
 template <int dim> void MpmSimulation<dim>::velocityGradient() {
@@ -290,6 +303,7 @@ template <int dim> void MpmSimulation<dim>::velocityGradient() {
 template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
     auto timer = timer_(PhaseTimer::P2G);
     transfer_->scatterForce(particles_, grid_, sort_);
+    bc_.fold(grid_, activeBlocks_, FoldForce);
 }
 
 template <int dim> void MpmSimulation<dim>::remapMomentum() {
@@ -299,6 +313,7 @@ template <int dim> void MpmSimulation<dim>::remapMomentum() {
         grid_.momentum[i].setZero();
     });
     transfer_->scatter(particles_, grid_, sort_, false);
+    bc_.fold(grid_, activeBlocks_, FoldMassMomentum);
 }
 
 template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
@@ -320,7 +335,7 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
             grid_.v[node] = v0 + (dt / m) * f;
         }
     });
-    applyBoundaryConditions(true, dt);
+    bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
 }
 
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
@@ -395,7 +410,8 @@ template <int dim> void MpmSimulation<dim>::pushPointsOutOfBodies(double dt) {
 }
 
 template <int dim> void MpmSimulation<dim>::checkBodies() {
-    const std::string wrong = bodies_.check(grid_);
+    const std::string wrong = bodies_.check(
+        grid_, [&](int f, const Vec<dim>& x) { return bc_.open(f, x, time_->value()); });
     if (!wrong.empty()) fail("rigid bodies", -1, wrong);
     // The gap enforcement changed velocities: the CFL speed is taken from the state again, as a
     // restart takes it (a restarted run then steps exactly as an uninterrupted one).
@@ -423,91 +439,6 @@ template <int dim> double MpmSimulation<dim>::maxSpeed() const {
     for (Index i = 0; i < n; ++i)
         speed = std::max(speed, particles_.v[i].norm());
     return std::max(speed, bodies_.maxRimSpeed());
-}
-
-template <int dim> void MpmSimulation<dim>::removeOutflow() {
-    // Particles more than one cell beyond an open face have left the domain: remove them,
-    // keeping the order of the others (deterministic).
-    const Index n = static_cast<Index>(particles_.size());
-    // Beyond these bounds on an open side a particle has left (±inf on walled sides).
-    Vec<dim> lo, hi;
-    for (int d = 0; d < dim; ++d) {
-        lo[d] = grid_.faces()[2 * d].kind == FaceCondition::Kind::Open ? grid_.lo()[d] - grid_.h()
-                                                                       : -1e300;
-        hi[d] = grid_.faces()[2 * d + 1].kind == FaceCondition::Kind::Open
-                    ? grid_.hi()[d] + grid_.h()
-                    : 1e300;
-    }
-    auto outside = [&](Index i) {
-        return ((particles_.x[i] - lo).minCoeff() < 0) || ((hi - particles_.x[i]).minCoeff() < 0);
-    };
-    Index anyOut = 0;
-#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : anyOut)
-    for (Index i = 0; i < n; ++i)
-        anyOut += outside(i);
-    if (anyOut == 0) return;
-    std::vector<Index> keep;
-    keep.reserve(n);
-    for (Index i = 0; i < n; ++i)
-        if (!outside(i)) keep.push_back(i);
-    if (static_cast<Index>(keep.size()) == n) return;
-    if (keep.empty()) throw RunError("every particle has left the domain through open faces");
-    particles_.permute(keep);
-    buildMaterialLists();
-    removed_ += n - static_cast<Index>(keep.size());
-}
-
-template <int dim>
-void MpmSimulation<dim>::applyBoundaryConditions(bool recordReactions, double dt) {
-    std::vector<Vec<dim>>& vel = recordReactions ? grid_.v : grid_.vOld;
-    if (recordReactions) {
-        touched_.resize(grid_.numNodes(), 0);
-        for (int f = 0; f < Grid<dim>::NumFaces; ++f)
-            for (Index i : grid_.faceNodes(f))
-                touched_[i] = 0;
-    }
-    for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
-        const FaceCondition& fc = grid_.faces()[f];
-        Vec<dim> reaction = Vec<dim>::Zero();
-        if (fc.kind != FaceCondition::Kind::Open) {
-            const int axis = f / 2;
-            const double sign = f % 2 == 0 ? -1.0 : 1.0; // outward normal along axis
-            for (Index i : grid_.faceNodes(f)) {
-                const double m = grid_.mass[i];
-                if (m == 0) continue;
-                Vec<dim>& v = vel[i];
-                // The reaction balances the physical forces on the node: the first face acting
-                // on a node measures it from the undamped update v⁰ + Δt (f/m + g), not from
-                // the (locally damped) v; a later face (edges, corners) from what is left.
-                Vec<dim> before = v;
-                if (recordReactions && !touched_[i]) {
-                    before = grid_.vOld[i] + dt * (grid_.force[i] / m + gravity_);
-                    touched_[i] = 1;
-                }
-                const double vn = sign * v[axis]; // > 0: into the wall
-                switch (fc.kind) {
-                case FaceCondition::Kind::NoSlip:
-                    v.setZero();
-                    break;
-                case FaceCondition::Kind::Slip:
-                    if (vn > 0) v[axis] = 0;
-                    break;
-                case FaceCondition::Kind::Friction:
-                    if (vn > 0) {
-                        v[axis] = 0;
-                        const double vt = v.norm();
-                        const double drop = fc.friction * vn;
-                        v *= vt > drop ? (1.0 - drop / vt) : 0.0;
-                    }
-                    break;
-                case FaceCondition::Kind::Open:
-                    break;
-                }
-                if (recordReactions) reaction += m * (before - v) / dt;
-            }
-        }
-        if (recordReactions) reactions_[f] = reaction;
-    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "boundary/BoundaryConditions.hpp"
 #include "case/Case.hpp"
 #include "case/Time.hpp"
 #include "contact/Coupling.hpp"
@@ -49,7 +50,6 @@ private:
 
     // Phases of a step.
     void sortAndComputeWeights();
-    void removeOutflow();
     void computeCouplingForces(double dt);
     void particleToGrid();
     void updateGridVelocity(double dt);
@@ -64,8 +64,6 @@ private:
     void updateStress(double dt) override;
     void scatterInternalForce() override;
     void remapMomentum() override;
-
-    void applyBoundaryConditions(bool recordReactions, double dt);
 
     // Set-up.
     void gravityPreload();
@@ -101,6 +99,7 @@ private:
     Time* time_ = nullptr;
 
     Grid<dim> grid_;
+    BoundaryConditions<dim> bc_; ///< conditions on the faces' patches, periodic faces
     std::unique_ptr<BodyAcceleration<dim>> acceleration_; ///< g(t) of constant/g
     Vec<dim> gravity_ = Vec<dim>::Zero();                 ///< g of this step: g(t + Δt/2)
     double accelerationWork_ = 0;                         ///< State::accelerationWork [J]
@@ -113,14 +112,13 @@ private:
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
     BlockSort<dim> sort_;
     std::vector<Index> activeBlocks_;
-    bool hasOpenFace_ = false;
+    double dt_ = 0; ///< size of the step under way
     Index removed_ = 0;
     double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
     PreloadSettings preload_;
     bool preloading_ = false;
     long preloadIndex_ = 0;
     double lastKinetic_ = 0;
-    std::vector<char> touched_; ///< face nodes already given a reaction this step
     std::array<Vec<dim>, 2 * dim> reactions_;
     BodySet<dim> bodies_;
     std::unique_ptr<Coupling<dim>> coupling_;

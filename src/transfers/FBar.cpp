@@ -17,6 +17,7 @@ void FBar<dim>::apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>
     for (Index i = 0; i < n; ++i)
         weighted_[i] = p.mass[i] * (Mat<dim>::Identity() + dt * p.L[i]).determinant();
     transfer.scatterScalar(weighted_, nodal_, sort);
+    if (foldNodal_) foldNodal_(nodal_); // periodic faces: images onto owners
     const Index nodes = g.numNodes();
 #pragma omp parallel for if (worthThreads(nodes)) schedule(static)
     for (Index k = 0; k < nodes; ++k)

@@ -6,6 +6,7 @@
 #include "particles/Particles.hpp"
 #include "transfers/Transfer.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace mpm {
@@ -36,7 +37,14 @@ public:
     void apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>& transfer,
                const BlockSort<dim>& sort, double dt);
 
+    /// On a periodic lattice: `fold(q)` folds a nodal scalar's image nodes onto their owners
+    /// (BoundaryConditions::foldField), set once at set-up.
+    void setNodalFold(std::function<void(std::vector<double>&)> fold) {
+        foldNodal_ = std::move(fold);
+    }
+
 private:
+    std::function<void(std::vector<double>&)> foldNodal_;
     std::vector<double> weighted_; ///< m_p ΔJ_p
     std::vector<double> nodal_;    ///< Σ_p w_ip m_p ΔJ_p, then ΔJ_i
     std::vector<double> average_;  ///< ΔJ̄_p

@@ -162,14 +162,22 @@ TEST(BoundaryConditions, CornerNodeReactionGoesToTheFirstFaceActing) {
 // ---------------------------------------------------------------------------------------------
 // The legacy syntax is bit-identical to the grid's face conditions
 
-/// The solver's former applyBoundaryConditions on Grid::faces(), verbatim.
+/// The grid's former per-face condition (one per face, before patches).
+struct FaceCondition {
+    enum class Kind { NoSlip, Slip, Friction, Open };
+    Kind kind = Kind::Slip;
+    double friction = 0.0;
+};
+using Kind = FaceCondition::Kind;
+
+/// The solver's former applyBoundaryConditions on the former face conditions, verbatim.
 template <int dim>
-void legacyApply(Grid<dim>& grid, bool recordReactions, double dt, const Vec<dim>& gravity,
-                 std::array<Vec<dim>, 2 * dim>& reactions) {
+void legacyApply(Grid<dim>& grid, const std::vector<FaceCondition>& faces, bool recordReactions,
+                 double dt, const Vec<dim>& gravity, std::array<Vec<dim>, 2 * dim>& reactions) {
     std::vector<Vec<dim>>& vel = recordReactions ? grid.v : grid.vOld;
     std::vector<char> touched(grid.numNodes(), 0);
     for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
-        const FaceCondition& fc = grid.faces()[f];
+        const FaceCondition& fc = faces[f];
         Vec<dim> reaction = Vec<dim>::Zero();
         if (fc.kind != FaceCondition::Kind::Open) {
             const int axis = f / 2;
@@ -222,7 +230,8 @@ template <int dim> void randomNodes(Grid<dim>& g, unsigned seed) {
     }
 }
 
-template <int dim> void checkLegacy(const std::string& text) {
+template <int dim>
+void checkLegacy(const std::string& text, const std::vector<FaceCondition>& faces) {
     SCOPED_TRACE(text);
     Grid<dim> a(parse(text)), b(parse(text));
     const BoundaryConditions<dim> bcConst(parse(text), a);
@@ -233,9 +242,9 @@ template <int dim> void checkLegacy(const std::string& text) {
         randomNodes(a, seed);
         randomNodes(b, seed);
         std::array<Vec<dim>, 2 * dim> ra, rb;
-        legacyApply(a, false, 0.0, gravity, ra);
+        legacyApply(a, faces, false, 0.0, gravity, ra);
         bcConst.constrain(b, b.vOld, 0.3);
-        legacyApply(a, true, 1e-3, gravity, ra);
+        legacyApply(a, faces, true, 1e-3, gravity, ra);
         bc.constrainUpdate(b, gravity, 0.3, 1e-3, rb);
         for (Index k = 0; k < a.numNodes(); ++k) {
             ASSERT_EQ(a.vOld[k], b.vOld[k]) << k;
@@ -252,11 +261,19 @@ template <int dim> void checkLegacy(const std::string& text) {
 TEST(BoundaryConditions, LegacySyntaxIsBitIdenticalToFaceConditions) {
     checkLegacy<2>("bounds: {min: [0, 0], max: [0.4, 0.3]}\ncellSize: 0.05\n"
                    "boundary: {yMin: noSlip, xMax: {type: friction, friction: 0.3}, "
-                   "xMin: open}\n");
-    checkLegacy<2>("bounds: {min: [0, 0], max: [0.4, 0.3]}\ncellSize: 0.05\n");
+                   "xMin: open}\n",
+                   {{Kind::Open}, {Kind::Friction, 0.3}, {Kind::NoSlip}, {Kind::Slip}});
+    checkLegacy<2>("bounds: {min: [0, 0], max: [0.4, 0.3]}\ncellSize: 0.05\n",
+                   std::vector<FaceCondition>(4));
     checkLegacy<3>("bounds: {min: [0, 0, 0], max: [0.3, 0.2, 0.4]}\ncellSize: 0.05\n"
                    "boundary: {xMin: noSlip, yMin: {type: friction, friction: 0.5}, "
-                   "zMin: {type: noSlip}, zMax: open, yMax: slip}\n");
+                   "zMin: {type: noSlip}, zMax: open, yMax: slip}\n",
+                   {{Kind::NoSlip},
+                    {Kind::Slip},
+                    {Kind::Friction, 0.5},
+                    {Kind::Slip},
+                    {Kind::NoSlip},
+                    {Kind::Open}});
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -53,7 +53,6 @@ template <int dim> void initParticle(Particles<dim>& p, std::size_t i) {
     p.stress[i].setZero();
     p.volume0[i] = p.volume[i] = 1e-3;
     p.plasticStrain[i] = 0;
-    p.slip[i] = 0;
     p.id[i] = static_cast<Index>(i);
     p.material[i] = 0;
 }

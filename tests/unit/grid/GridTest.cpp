@@ -132,18 +132,6 @@ TEST(Grid, FaceNodeLists) {
     EXPECT_EQ(Grid<3>::faceName(5), "zMax");
 }
 
-TEST(Grid, FaceConditions) {
-    const Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.5\n"
-                          "boundary:\n  xMin: noSlip\n  xMax: open\n"
-                          "  yMin: {type: friction, friction: 0.3}\n"));
-    using K = FaceCondition::Kind;
-    EXPECT_EQ(g.faces()[0].kind, K::NoSlip);
-    EXPECT_EQ(g.faces()[1].kind, K::Open);
-    EXPECT_EQ(g.faces()[2].kind, K::Friction);
-    EXPECT_DOUBLE_EQ(g.faces()[2].friction, 0.3);
-    EXPECT_EQ(g.faces()[3].kind, K::Slip); // default
-}
-
 TEST(Grid, CellSizeNotDividingBoxIsAnError) {
     const InputError e = catchInputError(
         [] { Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.3\n")); });
@@ -160,12 +148,9 @@ TEST(Grid, MaxNotAboveMinIsAnError) {
 }
 
 TEST(Grid, OtherInputErrors) {
-    // Non-positive cell size, wrong vector length, friction without coefficient, unknown key.
-    for (const char* text :
-         {"bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0\n",
-          "bounds: {min: [0, 0, 0], max: [1, 1]}\ncellSize: 0.25\n",
-          "bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\nboundary: {xMin: friction}\n",
-          "bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\nboundary: {xmin: slip}\n"}) {
+    // Non-positive cell size, wrong vector length (boundary keys: BoundaryConditionsTest).
+    for (const char* text : {"bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0\n",
+                             "bounds: {min: [0, 0, 0], max: [1, 1]}\ncellSize: 0.25\n"}) {
         SCOPED_TRACE(text);
         EXPECT_THROW(Grid<2> g(parse(text)), InputError);
     }
