@@ -7,6 +7,7 @@
 #include <csignal>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace mpm {
 
@@ -212,6 +213,17 @@ std::vector<std::string> Time::wrote() {
         }
     if (stopAtNextWrite_) stopNow_ = true;
     return purge;
+}
+
+void Time::checkFixedDeltaT(double critical, const std::string& limit) const {
+    if (adjust_ || fixedDeltaT_ <= critical) return;
+    std::ostringstream os;
+    os << "deltaT = " << fixedDeltaT_ << " s exceeds the stable limit " << limit << " = "
+       << critical << " s";
+    if (!allowUnstable_)
+        dict_.error("deltaT", os.str() + "; reduce deltaT, set adjustTimeStep: yes, or set "
+                                         "allowUnstableDeltaT: yes to run anyway");
+    warning() << os.str() << "; running anyway (allowUnstableDeltaT: yes)\n";
 }
 
 } // namespace mpm

@@ -52,6 +52,10 @@ public:
     double startTime() const { return startTime_; }
     /// "Fixed deltaT above the stable limit" is an error unless the case asks for a warning.
     bool allowUnstableDeltaT() const { return allowUnstable_; }
+    /// With a fixed Δt (adjustTimeStep: no), refuse a deltaT above the stable step `critical`
+    /// [s] (an InputError on deltaT naming `limit`, the formula and its values) unless
+    /// allowUnstableDeltaT, which only warns.
+    void checkFixedDeltaT(double critical, const std::string& limit) const;
     /// Line of `key` in system/controlDict, for messages.
     const Dictionary& dict() const { return dict_; }
     /// True after stop was requested (signal, stop file, stopAt writeNow/noWriteNow).

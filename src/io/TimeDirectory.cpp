@@ -4,6 +4,9 @@
 #include "core/Error.hpp"
 #include "io/ParticleIO.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace mpm::io {
 
 namespace fs = std::filesystem;
@@ -33,6 +36,21 @@ void TimeDirectoryWriter::write(Time& time, const std::function<void(const fs::p
         for (std::size_t k = 0; k < names_.size(); ++k)
             pvd_[k]->remove(old + "/" + files[k]);
     }
+}
+
+std::string restartDirectory(const Case& cs, const Time& time) {
+    const auto dirs = cs.timeDirectories();
+    std::string from;
+    if (time.startFrom() == "latestTime" && !dirs.empty()) from = dirs.back().second;
+    if (time.startFrom() == "firstTime" && !dirs.empty()) from = dirs.front().second;
+    if (time.startFrom() == "startTime") {
+        for (const auto& [t, n] : dirs)
+            if (std::fabs(t - time.startTime()) <= 1e-12 * std::max(1.0, t)) from = n;
+        if (from.empty() && time.startTime() != 0.0)
+            time.dict().error("startTime", "no time directory " + timeName(time.startTime(), 6) +
+                                               " with particles.vtu to start from");
+    }
+    return from;
 }
 
 template <int dim>

@@ -34,6 +34,11 @@ private:
     std::vector<std::unique_ptr<PvdIndex>> pvd_;
 };
 
+/// The time directory a run starts from (system/controlDict startFrom: latestTime, firstTime,
+/// or startTime when a directory has that time), or "" for a fresh start. A startTime other
+/// than 0 without its directory is an InputError.
+std::string restartDirectory(const Case& cs, const Time& time);
+
 /// Read the particles of time directory `timeDir` (its particles.vtu) for a restart into `p`,
 /// whose model state is declared; every restart field must be present and every material index
 /// below `numMaterials` (InputError naming the file otherwise).

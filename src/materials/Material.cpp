@@ -26,6 +26,15 @@ std::unique_ptr<Material<dim>> Material<dim>::create(const Dictionary& dict,
     return m;
 }
 
+template <int dim>
+std::vector<std::unique_ptr<Material<dim>>> Material<dim>::createAll(const Dictionary& materials) {
+    std::vector<std::unique_ptr<Material<dim>>> all;
+    for (const std::string& name : materials.keys())
+        all.push_back(create(materials.subDict(name), name));
+    if (all.empty()) materials.error("", "no materials are defined");
+    return all;
+}
+
 template class Material<2>;
 template class Material<3>;
 

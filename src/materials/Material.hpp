@@ -67,6 +67,8 @@ public:
 
     /// Build the material named `name` from its dictionary (`type:` picks the model).
     static std::unique_ptr<Material> create(const Dictionary& dict, const std::string& name);
+    /// Every material of constant/materials, in file order (none is an InputError).
+    static std::vector<std::unique_ptr<Material>> createAll(const Dictionary& materials);
 
 private:
     std::string name_;

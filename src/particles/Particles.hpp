@@ -4,6 +4,7 @@
 #include "core/Parallel.hpp"
 #include "core/Types.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <string>
 #include <type_traits>
@@ -109,6 +110,21 @@ template <int dim> struct Particles {
         forEachArray([n](auto& a) { a.resize(n); });
     }
 
+    /// Kinematics of a step [002 Eq. 76]: F ← (1 + Δt L) F, V = det(F) V⁰. Returns the first
+    /// particle with det F ≤ 0 (an inverted element), or size() if none.
+    Index updateDeformation(double dt) {
+        const Index n = static_cast<Index>(size());
+        Index inverted = n;
+#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)
+        for (Index i = 0; i < n; ++i) {
+            F[i] = (Mat<dim>::Identity() + dt * L[i]) * F[i];
+            const double J = F[i].determinant();
+            if (!(J > 0)) inverted = std::min(inverted, i);
+            volume[i] = J * volume0[i];
+        }
+        return inverted;
+    }
+
     /// Declare model state (a no-op returning the existing handle when a field of that name and
     /// type exists: two materials of one model share it). New entries get `init` on every
     /// present particle. Returns the handle for scalar()/tensor()/flag().
@@ -118,13 +134,27 @@ template <int dim> struct Particles {
     std::size_t addTensor(const FieldInfo& info, const Mat3& init = Mat3::Zero()) {
         return addField(tensors, info, init);
     }
-    std::size_t addFlag(const FieldInfo& info, int init = 0) { return addField(flags, info, init); }
-    std::vector<double>& scalar(std::size_t h) { return scalars[h].data; }
-    const std::vector<double>& scalar(std::size_t h) const { return scalars[h].data; }
-    std::vector<Mat3>& tensor(std::size_t h) { return tensors[h].data; }
-    const std::vector<Mat3>& tensor(std::size_t h) const { return tensors[h].data; }
-    std::vector<int>& flag(std::size_t h) { return flags[h].data; }
-    const std::vector<int>& flag(std::size_t h) const { return flags[h].data; }
+    std::size_t addFlag(const FieldInfo& info, int init = 0) {
+        return addField(flags, info, init);
+    }
+    std::vector<double>& scalar(std::size_t h) {
+        return scalars[h].data;
+    }
+    const std::vector<double>& scalar(std::size_t h) const {
+        return scalars[h].data;
+    }
+    std::vector<Mat3>& tensor(std::size_t h) {
+        return tensors[h].data;
+    }
+    const std::vector<Mat3>& tensor(std::size_t h) const {
+        return tensors[h].data;
+    }
+    std::vector<int>& flag(std::size_t h) {
+        return flags[h].data;
+    }
+    const std::vector<int>& flag(std::size_t h) const {
+        return flags[h].data;
+    }
 
     /// An empty set of particles with the same declared model state (names, no values).
     Particles emptyLike() const {

@@ -91,10 +91,12 @@ int Application::run(const std::function<void()>& body) const {
         std::cerr << "\n--> MPMFOAM FATAL IO ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
     } catch (const RunError& e) {
         std::cout.flush();
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
+        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
+                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
     } catch (const std::exception& e) {
         std::cout.flush();
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
+        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
+                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
     }
     return 1;
 }

@@ -5,7 +5,7 @@
 #include "core/Parallel.hpp"
 #include "io/ParticleIO.hpp"
 #include "solver/GravityPreload.hpp"
-#include "solver/Reduce.hpp"
+#include "solver/StateMeasures.hpp"
 
 #include <cassert>
 #include <cmath>
@@ -27,10 +27,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     acceleration_ = cs.exists("constant/g") ? BodyAcceleration<dim>::create(cs.read("constant/g"))
                                             : BodyAcceleration<dim>::constant(Vec<dim>::Zero());
 
-    const Dictionary mats = cs.read("constant/materials");
-    for (const std::string& name : mats.keys())
-        materials_.push_back(Material<dim>::create(mats.subDict(name), name));
-    if (materials_.empty()) mats.error("", "no materials are defined");
+    materials_ = Material<dim>::createAll(cs.read("constant/materials"));
     for (const auto& m : materials_) {
         maxWaveSpeed_ = std::max(maxWaveSpeed_, m->waveSpeed());
         waveOf_.push_back(m->waveSpeed());
@@ -59,18 +56,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
 
 template <int dim> void MpmSimulation<dim>::start(Time& time) {
     time_ = &time;
-    const auto dirs = case_.timeDirectories();
-    std::string from;
-    if (time.startFrom() == "latestTime" && !dirs.empty()) from = dirs.back().second;
-    if (time.startFrom() == "firstTime" && !dirs.empty()) from = dirs.front().second;
-    if (time.startFrom() == "startTime") {
-        for (const auto& [t, n] : dirs)
-            if (std::fabs(t - time.startTime()) <= 1e-12 * std::max(1.0, t)) from = n;
-        if (from.empty() && time.startTime() != 0.0)
-            time.dict().error("startTime", "no time directory " + timeName(time.startTime(), 6) +
-                                               " with particles.vtu to start from");
-    }
-
+    const std::string from = io::restartDirectory(case_, time);
     const bool fresh = from.empty();
     if (fresh) {
         gravity_ = acceleration_->at(time.startFrom() == "startTime" ? time.startTime() : 0.0);
@@ -97,12 +83,15 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     }
     transfer_ = Transfer<dim>::create(schemes, gimpHalfWidth());
 
-    maxSpeed_ = maxSpeed();
+    maxSpeed_ = maxSpeed(particles_, bodies_);
     lightestMass_ = 1e300;
     for (double m : particles_.mass)
         lightestMass_ = std::min(lightestMass_, m);
-    checkDeltaT();
-    energyBudget_ = energyBudget();
+    std::ostringstream limit; // the limit and its values, for the message
+    limit << "h/(c + |v|max) (h = " << grid_.h() << " m, c = " << maxWaveSpeed_
+          << " m/s, |v|max = " << maxSpeed_ << " m/s)";
+    time.checkFixedDeltaT(criticalDeltaT(), limit.str());
+    energyBudget_ = energyBudget(particles_, materials_, bodies_, *acceleration_, gravity_, grid_);
 
     if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
     for (auto& f : functions_)
@@ -116,33 +105,6 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         for (auto& f : functions_)
             f->executeNow(state(), time);
     }
-}
-
-template <int dim> double MpmSimulation<dim>::energyBudget() const {
-    // What the initial state and gravity could supply, ×10; prescribed and driven bodies can do
-    // unbounded work.
-    const Particles<dim>& p = particles_;
-    const Index n = static_cast<Index>(p.size());
-    const double kinetic =
-        deterministicSum(n, [&](Index i) { return 0.5 * p.mass[i] * p.v[i].squaredNorm(); });
-    const double strain =
-        deterministicSum(n, [&](Index i) { return materials_[p.material[i]]->strainEnergy(p, i); });
-    const double mass = deterministicSum(n, [&](Index i) { return p.mass[i]; });
-    double budget = 0;
-    if (acceleration_->isConstant()) {
-        double extent = 0; // Σ |g_d| L_d: the largest drop in potential per unit mass
-        for (int d = 0; d < dim; ++d)
-            extent += std::fabs(gravity_[d]) * (grid_.hi()[d] - grid_.lo()[d]);
-        budget = 10.0 * (kinetic + strain + mass * extent + bodies_.energyBudget(extent));
-    } else { // the work a time-varying g can do (BodyAcceleration::energySupply)
-        double bodyMass = 0;
-        for (const auto& b : bodies_.bodies())
-            if (b->motion() == Motion::Free || b->motion() == Motion::Driven) bodyMass += b->mass();
-        budget =
-            10.0 * (kinetic + strain + bodies_.energyBudget(0.0) +
-                    acceleration_->energySupply(mass + bodyMass, (grid_.hi() - grid_.lo()).norm()));
-    }
-    return budget <= 0 || bodies_.driven() ? 1e300 : budget;
 }
 
 template <int dim> double MpmSimulation<dim>::gimpHalfWidth() const {
@@ -197,20 +159,6 @@ template <int dim> double MpmSimulation<dim>::stableDeltaT() const {
     return time_->maxCo() * criticalDeltaT();
 }
 
-template <int dim> void MpmSimulation<dim>::checkDeltaT() const {
-    if (time_->adjustTimeStep()) return;
-    const double critical = criticalDeltaT();
-    if (time_->fixedDeltaT() <= critical) return;
-    std::ostringstream os;
-    os << "deltaT = " << time_->fixedDeltaT()
-       << " s exceeds the stable limit h/(c + |v|max) = " << critical << " s (h = " << grid_.h()
-       << " m, c = " << maxWaveSpeed_ << " m/s, |v|max = " << maxSpeed_ << " m/s)";
-    if (!time_->allowUnstableDeltaT())
-        time_->dict().error("deltaT", os.str() + "; reduce deltaT, set adjustTimeStep: yes, or "
-                                                 "set allowUnstableDeltaT: yes to run anyway");
-    warning() << os.str() << "; running anyway (allowUnstableDeltaT: yes)\n";
-}
-
 // ---------------------------------------------------------------------------------------------
 // The step
 
@@ -221,7 +169,7 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
     const bool varyingG = !acceleration_->isConstant() && !preloading_;
     if (!preloading_) gravity_ = acceleration_->at(time_->value() - 0.5 * dt); // t + Δt/2
     sortAndComputeWeights();
-    const Vec<dim> moment0 = varyingG ? massMoment() : Vec<dim>::Zero();
+    const Vec<dim> moment0 = varyingG ? massMoment(particles_, bodies_) : Vec<dim>::Zero();
     if (withBodies) computeCouplingForces(dt);
     particleToGrid();
     order_->afterParticleToGrid(*this, dt); // USF: L, stress and internal force
@@ -234,7 +182,7 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
         checkBodies();
     }
     // Work of a time-varying g: g(t + Δt/2)·Σ m Δx with the displacements of the step.
-    if (varyingG) accelerationWork_ += gravity_.dot(massMoment() - moment0);
+    if (varyingG) accelerationWork_ += gravity_.dot(massMoment(particles_, bodies_) - moment0);
     timer_.stepDone(PhaseTimer::now() - t0);
     if (timer_.steps() % 20 == 0) snapshot();
 }
@@ -351,52 +299,31 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
         std::ostringstream os;
         os << "moved more than one cell in one step (|v| = " << maxSpeed_ << " m/s, dt = " << dt
            << " s, h = " << grid_.h() << " m): the run is unstable or deltaT is too large";
-        fail("G2P", fastestParticle(), os.str());
+        fail("G2P", fastestParticle(particles_), os.str());
     }
     if (st.kineticEnergy > energyBudget_) {
         std::ostringstream os;
         os << "is the fastest of a kinetic-energy blow-up: E_k = " << st.kineticEnergy
            << " J exceeds 10× what the initial state and the body acceleration can supply ("
            << energyBudget_ / 10 << " J)";
-        fail("G2P", fastestParticle(), os.str());
+        fail("G2P", fastestParticle(particles_), os.str());
     }
 }
 
 template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
     auto timer = timer_(PhaseTimer::Constitutive);
-    assert(gradientSeen() && "the stress update saw no velocity gradient in a non-uniform flow");
+    assert(gradientSeen(particles_, grid_,
+                        order_->gradientInGridToParticle() ? grid_.v : grid_.vOld) &&
+           "the stress update saw no velocity gradient in a non-uniform flow");
     // Kinematics: [L ← L̄ (F̄ anti-locking)], F ← (1 + Δt L) F, V = det(F) V⁰ [002 Eq. 76].
     if (fBar_) fBar_->apply(particles_, grid_, *transfer_, sort_, dt);
-    const Index n = static_cast<Index>(particles_.size());
-    Index inverted = n;
-#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)
-    for (Index i = 0; i < n; ++i) {
-        particles_.F[i] = (Mat<dim>::Identity() + dt * particles_.L[i]) * particles_.F[i];
-        const double J = particles_.F[i].determinant();
-        if (!(J > 0)) inverted = std::min(inverted, i);
-        particles_.volume[i] = J * particles_.volume0[i];
-    }
-    if (inverted < n) fail("constitutive", inverted, "has det F <= 0 (inverted element)");
+    const Index inverted = particles_.updateDeformation(dt);
+    if (inverted < numParticles())
+        fail("constitutive", inverted, "has det F <= 0 (inverted element)");
     for (std::size_t m = 0; m < materials_.size(); ++m) {
         const Index bad = materials_[m]->updateStress(particles_, materialParticles_[m], dt);
         if (bad >= 0) fail("constitutive", bad, "has a stress that is not finite");
     }
-}
-
-template <int dim> bool MpmSimulation<dim>::gradientSeen() const {
-    // L = 0 on every point while the grid velocity L came from is not uniform: a stress-update
-    // order lost the phase that computes L (USF did, unnoticed, until the scheme matrix).
-    for (const auto& L : particles_.L)
-        if (L.squaredNorm() > 0) return true;
-    const auto& v = order_->gradientInGridToParticle() ? grid_.v : grid_.vOld;
-    bool first = true, uniform = true;
-    Vec<dim> v0 = Vec<dim>::Zero();
-    for (Index i = 0; i < grid_.numNodes(); ++i) {
-        if (grid_.mass[i] <= 0) continue;
-        if (first) v0 = v[i], first = false;
-        uniform = uniform && v[i] == v0;
-    }
-    return uniform;
 }
 
 template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
@@ -415,30 +342,7 @@ template <int dim> void MpmSimulation<dim>::checkBodies() {
     if (!wrong.empty()) fail("rigid bodies", -1, wrong);
     // The gap enforcement changed velocities: the CFL speed is taken from the state again, as a
     // restart takes it (a restarted run then steps exactly as an uninterrupted one).
-    maxSpeed_ = maxSpeed();
-}
-
-template <int dim> Vec<dim> MpmSimulation<dim>::massMoment() const {
-    // Σ m_p x_p + Σ m_b x_b over the points and the bodies that g moves (free, driven).
-    const Particles<dim>& p = particles_;
-    const Index n = static_cast<Index>(p.size());
-    Vec<dim> moment;
-    for (int d = 0; d < dim; ++d)
-        moment[d] = deterministicSum(n, [&](Index i) { return p.mass[i] * p.x[i][d]; });
-    for (const auto& b : bodies_.bodies())
-        if (b->motion() == Motion::Free || b->motion() == Motion::Driven)
-            moment += b->mass() * b->position();
-    return moment;
-}
-
-template <int dim> double MpmSimulation<dim>::maxSpeed() const {
-    // The largest point speed and body rim speed |v| + |ω| R [m/s] (bodies count for the CFL).
-    const Index n = static_cast<Index>(particles_.size());
-    double speed = 0;
-#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(max : speed)
-    for (Index i = 0; i < n; ++i)
-        speed = std::max(speed, particles_.v[i].norm());
-    return std::max(speed, bodies_.maxRimSpeed());
+    maxSpeed_ = maxSpeed(particles_, bodies_);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -469,13 +373,6 @@ template <int dim> void MpmSimulation<dim>::write() {
             if (!bodies_.empty()) bodies_.write(dir);
         },
         files);
-}
-
-template <int dim> Index MpmSimulation<dim>::fastestParticle() const {
-    Index worst = 0;
-    for (Index i = 0; i < static_cast<Index>(particles_.size()); ++i)
-        if (particles_.v[i].norm() > particles_.v[worst].norm()) worst = i;
-    return worst;
 }
 
 template <int dim>

@@ -57,7 +57,6 @@ private:
     void advanceBodies(double dt);
     void pushPointsOutOfBodies(double dt);
     void checkBodies();
-    bool gradientSeen() const; ///< debug invariant of the stress update
     // Phases a stress-update order places (StressPhases).
     void gridVelocityFromMomentum() override;
     void velocityGradient() override;
@@ -70,15 +69,10 @@ private:
     double gimpHalfWidth() const;
     void buildMaterialLists();
     double criticalDeltaT() const;
-    void checkDeltaT() const;
-    double energyBudget() const;
-    double maxSpeed() const;
-    Vec<dim> massMoment() const;
 
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
-    Index fastestParticle() const;
     State<dim> state() const {
         return {particles_,
                 grid_,
