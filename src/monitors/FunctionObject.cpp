@@ -22,8 +22,9 @@ template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& ti
     out_.open(dir / (name_ + ".dat"));
     if (!out_) throw RunError("cannot write " + (dir / (name_ + ".dat")).string());
     precision_ = std::max(time.writePrecision(), 10);
+    // The index execute() compares with (a restarted run resumes the same schedule).
     lastIndex_ = byTime_ ? static_cast<long>(std::floor(time.value() / std::max(interval_, 1e-300)))
-                         : time.index();
+                         : time.index() / static_cast<long>(interval_);
 }
 
 template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, const Time& time) {
