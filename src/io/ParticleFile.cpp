@@ -21,6 +21,7 @@
 #include <cctype>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -215,6 +216,14 @@ PointCloud readVtu(const std::filesystem::path& file) {
         cloud.arrays.push_back(std::move(a));
     }
     return cloud;
+}
+
+void writeScalarFile(const std::filesystem::path& file, const std::string& key, double value) {
+    std::ostringstream os;
+    os.precision(17);
+    os << key << ": " << value << "\n";
+    std::filesystem::create_directories(file.parent_path());
+    writeTextAtomic(file, os.str());
 }
 
 void writeTextAtomic(const std::filesystem::path& file, const std::string& text) {

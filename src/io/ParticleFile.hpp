@@ -42,4 +42,8 @@ PointCloud readVtu(const std::filesystem::path& file);
 /// Write text to `file` atomically (temporary name in the same folder, then rename).
 void writeTextAtomic(const std::filesystem::path& file, const std::string& text);
 
+/// Write `key: value` (17 significant digits, read back exactly) to `file` atomically, creating
+/// its folder: a number of the restart state such as `<time>/uniform/accelerationWork`.
+void writeScalarFile(const std::filesystem::path& file, const std::string& key, double value);
+
 } // namespace mpm::io

@@ -125,6 +125,14 @@ template <int dim> struct Particles {
         return inverted;
     }
 
+    /// Stop every point: v = 0 and C = 0 (the end of a gravity preload).
+    void stop() {
+        for (std::size_t i = 0; i < size(); ++i) {
+            v[i].setZero();
+            C[i].setZero();
+        }
+    }
+
     /// Declare model state (a no-op returning the existing handle when a field of that name and
     /// type exists: two materials of one model share it). New entries get `init` on every
     /// present particle. Returns the handle for scalar()/tensor()/flag().

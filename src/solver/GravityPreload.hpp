@@ -2,12 +2,23 @@
 #pragma once
 
 #include "core/Log.hpp"
+#include "core/Types.hpp"
 #include "particles/ParticleSeeder.hpp"
 #include "solver/PhaseTimer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mpm {
+
+/// The quiet window of the preload: a period of the slowest vertical mode, 4 L/c, with L the
+/// extent of the box `size` along g (an upper bound of the material's height) [s].
+template <int dim> double preloadWindow(const Vec<dim>& g, const Vec<dim>& size, double c) {
+    double extent = 0;
+    for (int d = 0; d < dim; ++d)
+        extent += std::fabs(g[d]) / g.norm() * size[d];
+    return 4.0 * extent / c;
+}
 
 /// The gravity preload [000 §4.2]: the material is loaded by gravity with local damping until
 /// its kinetic energy is nearly zero; bodies wait. E_k also vanishes at the turning points of an

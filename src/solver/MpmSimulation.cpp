@@ -7,6 +7,7 @@
 #include "solver/GravityPreload.hpp"
 #include "solver/StateMeasures.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <iomanip>
@@ -76,17 +77,12 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     }
     buildMaterialLists();
     if (coupling_) coupling_->setParticles(particles_);
-    const Dictionary schemes = case_.read("system/mpmSchemes");
-    if (fresh && preload_.requested) {
-        transfer_ = Transfer<dim>::create(schemes, gimpHalfWidth());
-        gravityPreload();
-    }
-    transfer_ = Transfer<dim>::create(schemes, gimpHalfWidth());
+    transfer_ = Transfer<dim>::create(case_.read("system/mpmSchemes"), gimpHalfWidth());
+    if (fresh && preload_.requested) gravityPreload();
 
     maxSpeed_ = maxSpeed(particles_, bodies_);
-    lightestMass_ = 1e300;
-    for (double m : particles_.mass)
-        lightestMass_ = std::min(lightestMass_, m);
+    const auto& m = particles_.mass; // restarting from an empty file is allowed
+    lightestMass_ = m.empty() ? 1e300 : *std::min_element(m.begin(), m.end());
     std::ostringstream limit; // the limit and its values, for the message
     limit << "h/(c + |v|max) (h = " << grid_.h() << " m, c = " << maxWaveSpeed_
           << " m/s, |v|max = " << maxSpeed_ << " m/s)";
@@ -122,21 +118,14 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     damping_ = preload_.damping;
     preloading_ = true;
     maxSpeed_ = 0;
-    // The window is a period of the slowest vertical mode, 4 L/c with L the grid's extent along
-    // g (an upper bound of the material's height).
-    double extent = 0;
-    for (int d = 0; d < dim; ++d)
-        extent += std::fabs(gravity_[d]) / gravity_.norm() * (grid_.hi()[d] - grid_.lo()[d]);
-    runGravityPreload(preload_, 4.0 * extent / maxWaveSpeed_, [&](long k, double& dt) {
+    const double window = preloadWindow(gravity_, Vec<dim>(grid_.hi() - grid_.lo()), maxWaveSpeed_);
+    runGravityPreload(preload_, window, [&](long k, double& dt) {
         dt = time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_);
         preloadIndex_ = k;
         step(dt); // the material only: bodies wait while preloading_
         return lastKinetic_;
     });
-    for (std::size_t i = 0; i < particles_.size(); ++i) {
-        particles_.v[i].setZero();
-        particles_.C[i].setZero();
-    }
+    particles_.stop();
     maxSpeed_ = 0;
     damping_ = savedDamping;
     preloading_ = false;
@@ -363,13 +352,9 @@ template <int dim> void MpmSimulation<dim>::write() {
         *time_,
         [this](const std::filesystem::path& dir) {
             io::writeVtu(dir / "particles.vtu", io::toPointCloud(particles_));
-            if (!acceleration_->isConstant()) {
-                std::ostringstream os;
-                os.precision(17);
-                os << "work: " << accelerationWork_ << "\n";
-                std::filesystem::create_directories(dir / "uniform");
-                io::writeTextAtomic(dir / "uniform" / "accelerationWork", os.str());
-            }
+            if (!acceleration_->isConstant())
+                io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
+                                    accelerationWork_);
             if (!bodies_.empty()) bodies_.write(dir);
         },
         files);
