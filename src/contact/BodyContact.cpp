@@ -11,11 +11,18 @@ std::unique_ptr<BodyContactLaw<dim>> BodyContactLaw<dim>::create(const Dictionar
 }
 
 template <int dim>
+void ContactProbes<dim>::update(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies) {
+    if (points.size() == bodies.size()) return;
+    points.resize(bodies.size());
+    radii.resize(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+        bodies[b]->shape().contactProbes(points[b], radii[b]);
+}
+
+template <int dim>
 void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                       std::vector<ProbeContact<dim>>& contacts) {
+                       const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts) {
     contacts.clear();
-    std::vector<Vec<dim>> points;
-    std::vector<double> radii;
     const int n = static_cast<int>(bodies.size());
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j) {
@@ -24,15 +31,11 @@ void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodie
             if (a.motion() == Motion::Fixed && b.motion() == Motion::Fixed) continue;
             const double reach = a.shape().boundingRadius() + b.shape().boundingRadius();
             if ((a.position() - b.position()).squaredNorm() >= reach * reach) continue;
-            std::vector<Vec<dim>> pa, pb;
-            std::vector<double> ra, rb;
-            a.shape().contactProbes(pa, ra);
-            b.shape().contactProbes(pb, rb);
-            const bool aProbes = pa.size() <= pb.size();
+            const bool aProbes = probes.points[i].size() <= probes.points[j].size();
             const RigidBody<dim>& prober = aProbes ? a : b;
             const RigidBody<dim>& target = aProbes ? b : a;
-            points = aProbes ? pa : pb;
-            radii = aProbes ? ra : rb;
+            const std::vector<Vec<dim>>& points = probes.points[aProbes ? i : j];
+            const std::vector<double>& radii = probes.radii[aProbes ? i : j];
             for (std::size_t k = 0; k < points.size(); ++k) {
                 const Vec<dim> x = prober.position() + prober.rotation() * points[k];
                 Vec<dim> normal;
@@ -81,7 +84,8 @@ public:
     }
 
     void addForces(BodyList& bodies, ContactHistory<dim>& history, double dt) override {
-        findProbeContacts(bodies, contacts_);
+        probes_.update(bodies);
+        findProbeContacts(bodies, probes_, contacts_);
         ContactHistory<dim> next;
         for (const ProbeContact<dim>& c : contacts_) {
             RigidBody<dim>& p = *bodies[c.prober];
@@ -136,6 +140,7 @@ private:
     }
 
     double kn_, kt_, mu_, zeta_ = 0;
+    ContactProbes<dim> probes_;
     std::vector<ProbeContact<dim>> contacts_;
 };
 
@@ -146,9 +151,11 @@ MPM_REGISTER(BodyContactRegistry<3>, LinearSpringContact<3>, "linearSpring");
 
 template class BodyContactLaw<2>;
 template class BodyContactLaw<3>;
+template struct ContactProbes<2>;
+template struct ContactProbes<3>;
 template void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<2>>>&,
-                                std::vector<ProbeContact<2>>&);
+                                const ContactProbes<2>&, std::vector<ProbeContact<2>>&);
 template void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<3>>>&,
-                                std::vector<ProbeContact<3>>&);
+                                const ContactProbes<3>&, std::vector<ProbeContact<3>>&);
 
 } // namespace mpm

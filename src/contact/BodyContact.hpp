@@ -50,9 +50,18 @@ template <int dim> struct ProbeContact {
     Vec<dim> point;  ///< c
 };
 
+/// The contact probes (Shape::contactProbes) of each body, in its body frame: fixed for a rigid
+/// shape, so computed once (a level set's surface is not extracted every sub-step).
+template <int dim> struct ContactProbes {
+    std::vector<std::vector<Vec<dim>>> points;
+    std::vector<std::vector<double>> radii;
+    /// Fill for `bodies` unless already filled for that many.
+    void update(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies);
+};
+
 /// Every touching probe of every pair i < j of `bodies` (fixed pairs skipped), in a fixed order.
 template <int dim>
 void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                       std::vector<ProbeContact<dim>>& contacts);
+                       const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts);
 
 } // namespace mpm
