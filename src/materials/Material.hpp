@@ -6,6 +6,7 @@
 #include "core/Types.hpp"
 #include "particles/Particles.hpp"
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,16 @@ public:
     double density() const { return density_; }
     /// Largest elastic wave speed at density ρ₀, √(M/ρ₀) [m/s], for the CFL limit.
     virtual double waveSpeed() const = 0;
+    /// Viscosity a P wave feels, ϑ + 4η/3 [Pa·s] (0: inviscid, the default).
+    virtual double pWaveViscosity() const { return 0.0; }
+    /// Factor by which viscosity shortens the explicit step on a grid of spacing h [m]
+    /// [002 Eq. 79–80]: Δt_cr = h/c (√(ϑ̂² + 1) − ϑ̂), ϑ̂ = ϑ_P/(h √(M ρ₀)), with
+    /// ϑ_P = pWaveViscosity() and √(M ρ₀) = ρ₀ c. 1 when inviscid (the CFL limit h/c); h ρ₀ c/(2
+    /// ϑ_P) when the viscosity dominates (Δt_cr → h² ρ₀/(2 ϑ_P)).
+    double viscousStepFactor(double h) const {
+        const double thetaHat = pWaveViscosity() / (h * density() * waveSpeed());
+        return 1.0 / (std::sqrt(thetaHat * thetaHat + 1.0) + thetaHat); // no cancellation
+    }
 
     /// Declare the per-particle state this model keeps beyond the common fields (Particles::
     /// addScalar, addTensor, addFlag), keeping the handles; called once before seeding or restart.

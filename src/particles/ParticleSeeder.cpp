@@ -21,7 +21,11 @@ template <int dim> Vec<dim> toVec(const std::vector<double>& v) {
 
 /// Initial velocity of a particle set: a vector, or {type: uniform, value} or
 /// {type: axialMode, amplitude, direction, origin, length, mode}: the n-th mode of a bar fixed
-/// at `origin`, v = A sin((2n - 1)π s / 2L) d with s = (x - origin)·d.
+/// at `origin`, v = A sin((2n - 1)π s / 2L) d with s = (x - origin)·d, or
+/// {type: radialMode, amplitude, centre, radius}: the fundamental breathing mode of a ball (3D)
+/// or cylinder (2D) of radius a with a free, incompressible-limit surface [002 Eq. 62],
+/// v = A R(k r) r̂ with r = |x − centre|, R = j₁ (spherical Bessel), k = π/a in 3D and R = J₁,
+/// k = j₀,₁/a (j₀,₁ = 2.40483, the first zero of J₀) in 2D; A < 0 compresses.
 template <int dim> class InitialVelocity {
 public:
     explicit InitialVelocity(const Dictionary& set) {
@@ -30,9 +34,14 @@ public:
             return;
         }
         const Dictionary d = set.subDict("velocity");
-        const std::string type = d.getWord("type", {"uniform", "axialMode"});
+        const std::string type = d.getWord("type", {"uniform", "axialMode", "radialMode"});
         if (type == "uniform") {
             value_ = toVec<dim>(d.getVector("value", dim));
+        } else if (type == "radialMode") {
+            radial_ = true;
+            amplitude_ = d.getScalar("amplitude");
+            origin_ = toVec<dim>(d.getVector("centre", dim));
+            length_ = d.getScalar("radius", Bounds::positive());
         } else {
             mode_ = true;
             amplitude_ = d.getScalar("amplitude");
@@ -46,6 +55,14 @@ public:
         d.checkUnknownKeys();
     }
     Vec<dim> at(const Vec<dim>& x) const {
+        if (radial_) {
+            const Vec<dim> r = x - origin_;
+            const double rn = r.norm();
+            if (rn == 0.0) return Vec<dim>::Zero();
+            const double R = dim == 3 ? std::sph_bessel(1, M_PI * rn / length_)
+                                      : std::cyl_bessel_j(1.0, 2.404825557695773 * rn / length_);
+            return amplitude_ * R / rn * r;
+        }
         if (!mode_) return value_;
         const double s = (x - origin_).dot(direction_);
         return amplitude_ * std::sin((2 * n_ - 1) * M_PI * s / (2.0 * length_)) * direction_;
@@ -53,7 +70,7 @@ public:
 
 private:
     Vec<dim> value_ = Vec<dim>::Zero();
-    bool mode_ = false;
+    bool mode_ = false, radial_ = false;
     double amplitude_ = 0, length_ = 1;
     int n_ = 1;
     Vec<dim> direction_ = Vec<dim>::Zero(), origin_ = Vec<dim>::Zero();

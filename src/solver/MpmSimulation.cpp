@@ -31,6 +31,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     materials_ = Material<dim>::createAll(cs.read("constant/materials"));
     for (const auto& m : materials_) {
         maxWaveSpeed_ = std::max(maxWaveSpeed_, m->waveSpeed());
+        viscousFactor_ = std::min(viscousFactor_, m->viscousStepFactor(grid_.h()));
         waveOf_.push_back(m->waveSpeed());
         criticalDensityOf_.push_back(m->criticalDensity());
         m->declareState(particles_);
@@ -83,10 +84,9 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     maxSpeed_ = maxSpeed(particles_, bodies_);
     const auto& m = particles_.mass; // restarting from an empty file is allowed
     lightestMass_ = m.empty() ? 1e300 : *std::min_element(m.begin(), m.end());
-    std::ostringstream limit; // the limit and its values, for the message
-    limit << "h/(c + |v|max) (h = " << grid_.h() << " m, c = " << maxWaveSpeed_
-          << " m/s, |v|max = " << maxSpeed_ << " m/s)";
-    time.checkFixedDeltaT(criticalDeltaT(), limit.str());
+    const std::string limit = stepLimit();
+    log() << "Stable deltaT: " << criticalDeltaT() << " s, limit " << limit << "\n";
+    time.checkFixedDeltaT(criticalDeltaT(), limit);
     energyBudget_ = energyBudget(particles_, materials_, bodies_, *acceleration_, gravity_, grid_);
 
     if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
@@ -120,7 +120,7 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     maxSpeed_ = 0;
     const double window = preloadWindow(gravity_, Vec<dim>(grid_.hi() - grid_.lo()), maxWaveSpeed_);
     runGravityPreload(preload_, window, [&](long k, double& dt) {
-        dt = time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+        dt = time_->maxCo() * grid_.h() / (maxWaveSpeed_ + maxSpeed_) * viscousFactor_;
         preloadIndex_ = k;
         step(dt); // the material only: bodies wait while preloading_
         return lastKinetic_;
@@ -139,9 +139,30 @@ template <int dim> void MpmSimulation<dim>::buildMaterialLists() {
 }
 
 template <int dim> double MpmSimulation<dim>::criticalDeltaT() const {
-    double dt = grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+    // The viscous limit [002 Eq. 79] as a factor on the CFL limit: the smallest factor of all
+    // materials with the largest wave speed (conservative for mixed materials, exact for one).
+    double dt = grid_.h() / (maxWaveSpeed_ + maxSpeed_) * viscousFactor_;
     if (coupling_) dt = std::min(dt, coupling_->stableDeltaT(lightestMass_, maxWaveSpeed_));
     return dt;
+}
+
+template <int dim> std::string MpmSimulation<dim>::stepLimit() const {
+    std::ostringstream os; // the governing limit, its formula and values
+    const double cfl = grid_.h() / (maxWaveSpeed_ + maxSpeed_);
+    const double contact =
+        coupling_ ? coupling_->stableDeltaT(lightestMass_, maxWaveSpeed_) : 1e300;
+    if (contact < cfl * viscousFactor_)
+        os << "of the coupling's contact stiffness (the material's limit is "
+           << cfl * viscousFactor_ << " s)";
+    else if (viscousFactor_ < 1.0)
+        os << "viscous, h/(c + |v|max) (sqrt(thetaHat^2 + 1) - thetaHat) [002 Eq. 79] (h = "
+           << grid_.h() << " m, c = " << maxWaveSpeed_ << " m/s, |v|max = " << maxSpeed_
+           << " m/s, thetaHat = " << 0.5 * (1.0 / viscousFactor_ - viscousFactor_)
+           << "; inviscid it would be " << cfl << " s)";
+    else
+        os << "h/(c + |v|max) (h = " << grid_.h() << " m, c = " << maxWaveSpeed_
+           << " m/s, |v|max = " << maxSpeed_ << " m/s)";
+    return os.str();
 }
 
 template <int dim> double MpmSimulation<dim>::stableDeltaT() const {

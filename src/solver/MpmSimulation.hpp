@@ -69,6 +69,8 @@ private:
     double gimpHalfWidth() const;
     void buildMaterialLists();
     double criticalDeltaT() const;
+    /// The limit that governs criticalDeltaT, with its formula and values (log and errors).
+    std::string stepLimit() const;
 
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }
@@ -123,6 +125,7 @@ private:
     double maxSpeed_ = 0;
     double maxMoveSpeed_ = 0; ///< largest grid (PIC) speed a point moved with in the last G2P
     double maxWaveSpeed_ = 0;
+    double viscousFactor_ = 1; ///< smallest Material::viscousStepFactor of the materials [-]
     double lightestMass_ = 1e300;
     double energyBudget_ = 1e300;
     PhaseTimer timer_;
