@@ -3,7 +3,8 @@
 #  1. OMP_NUM_THREADS=1 and 2 give bit-identical particles.vtu at every write and identical
 #     function-object output;
 #  2. a run 0 → T and a run 0 → T/2 resumed to T (startFrom latestTime) give a bit-identical
-#     (bodyContact2D: with body–body contact history in uniform/bodyContacts at T/2)
+#     (bodyContact2D: with body–body contact history in uniform/bodyContacts at T/2;
+#     viscoelastic2D: with the stored elastic stress σᵉ of flowing points at T/2)
 #     final particles.vtu;
 #  3. ParaView's readers (VTK's XML readers) load particles.pvd and every time directory.
 set -euo pipefail
@@ -21,7 +22,7 @@ run() { # case threads [extra args]
         { echo "FAIL: mpmFoam failed on $dir"; cat "$dir/log.mpmFoam.$threads"; exit 1; }
 }
 
-for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D; do
+for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D viscoelastic2D; do
     src=$root/tests/cases/$c
     for t in 1 2; do
         rm -rf "$work/$c.$t" && cp -r "$src" "$work/$c.$t"
@@ -57,6 +58,18 @@ for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D; do
     grep -q "Restart from time" "$half/log.mpmFoam.2" || { echo "FAIL: $c: second run did not restart"; fail=1; }
     if [[ -f $src/constant/bodyContact ]] && ! grep -q '\[\[' "$half/$mid/uniform/bodyContacts"; then
         echo "FAIL: $c: no body contact history at the restart time $mid (the test would prove nothing)"; fail=1
+    fi
+    if [[ $c == viscoelastic2D ]]; then # the restart must carry a non-zero stored σᵉ
+        "$py" - "$half/$mid/particles.vtu" <<'PY' || { echo "FAIL: $c: no flowing point with a stored elastic stress at $mid (the test would prove nothing)"; fail=1; }
+import sys, vtk
+from vtk.util.numpy_support import vtk_to_numpy
+r = vtk.vtkXMLUnstructuredGridReader()
+r.SetFileName(sys.argv[1])
+r.Update()
+d = r.GetOutput().GetPointData()
+sys.exit(not ((vtk_to_numpy(d.GetArray("flowState")) == 1).any() and
+              abs(vtk_to_numpy(d.GetArray("elasticStress"))).max() > 0))
+PY
     fi
     last=$(ls -d "$work/$c.2"/[0-9]* | xargs -n1 basename | sort -g | tail -1)
     if cmp -s "$work/$c.2/$last/particles.vtu" "$half/$last/particles.vtu"; then
