@@ -273,6 +273,22 @@ std::vector<double> Dictionary::getVector(const std::string& key, int size) cons
     return out;
 }
 
+std::vector<std::string> Dictionary::getStringList(const std::string& key) const {
+    const YAML::Node v = required(*this, node_, *read_, key);
+    if (!v.IsSequence()) error(key, "expected a sequence of strings, got " + describe(v));
+    const std::string base = path_.empty() ? key : path_ + "." + key;
+    std::vector<std::string> out;
+    out.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].IsScalar()) {
+            throw InputError(file_, lineOf(v[i].Mark()), base + "[" + std::to_string(i) + "]",
+                             "expected a string, got " + describe(v[i]));
+        }
+        out.push_back(v[i].Scalar());
+    }
+    return out;
+}
+
 std::string Dictionary::getWord(const std::string& key,
                                 const std::vector<std::string>& choices) const {
     const YAML::Node v = required(*this, node_, *read_, key);

@@ -52,6 +52,9 @@ public:
     std::string getString(const std::string& key) const;
     /// A sequence of exactly `size` numbers (size < 0: any length).
     std::vector<double> getVector(const std::string& key, int size = -1) const;
+    /// A sequence of strings (e.g. `fields: [pressure, velocity]`); an item that is not a plain
+    /// string is an InputError located at the item (`key[i]`).
+    std::vector<std::string> getStringList(const std::string& key) const;
     /// One of `choices`; anything else is an InputError listing the choices.
     std::string getWord(const std::string& key, const std::vector<std::string>& choices) const;
 

@@ -29,7 +29,10 @@ template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& ti
 
 template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, const Time& time) {
     if (!headerDone_) {
-        out_ << "# " << name_ << "\n# time";
+        out_ << "# " << name_ << '\n';
+        for (const auto& l : headerLines(s))
+            out_ << "# " << l << '\n';
+        out_ << "# time";
         for (const auto& c : columns(s))
             out_ << ' ' << c;
         out_ << '\n';

@@ -15,9 +15,10 @@
 namespace mpm {
 
 /// A run-time monitor from controlDict `functions: {<name>: {type: …}}` (OpenFOAM's
-/// functionObject). It writes `postProcessing/<name>/<startTime>/<name>.dat`: a `#` header,
-/// then one row per execution, time first. `writeControl: timeStep` with `writeInterval: N`
-/// (default 1) executes it every N steps; `runTime` every writeInterval seconds.
+/// functionObject). It writes `postProcessing/<name>/<startTime>/<name>.dat`: a `#` header
+/// (`# <name>`, any headerLines(), `# time <columns>`), then one row per execution, time
+/// first. `writeControl: timeStep` with `writeInterval: N` (default 1) executes it every N
+/// steps; `runTime` every writeInterval seconds.
 template <int dim> class FunctionObject {
 public:
     FunctionObject(const Dictionary& dict, std::string name);
@@ -45,6 +46,9 @@ protected:
     virtual void sample(const State<dim>&, const Time&) {}
     /// Called once when the output opens (e.g. to record the initial state).
     virtual void initialise(const State<dim>&, const Time&) {}
+    /// Extra `#` header lines between the name and the column line (text after "# ");
+    /// default: none.
+    virtual std::vector<std::string> headerLines(const State<dim>&) const { return {}; }
     /// Column names after "time".
     virtual std::vector<std::string> columns(const State<dim>& s) const = 0;
     /// One row of values matching columns().

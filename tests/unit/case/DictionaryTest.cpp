@@ -210,6 +210,22 @@ TEST(Dictionary, VectorList) {
     expectError([&] { d.vectorList("word"); }, 9, "word[0]", "expected a number at index 1");
 }
 
+TEST(Dictionary, StringList) {
+    const Dictionary d = parse("fields: [pressure, velocity]\n"
+                               "empty: []\n"
+                               "word: pressure\n"
+                               "nested:\n"
+                               "  - pressure\n"
+                               "  - [a, b]\n");
+    EXPECT_EQ(d.getStringList("fields"), (std::vector<std::string>{"pressure", "velocity"}));
+    EXPECT_TRUE(d.getStringList("empty").empty());
+    expectError([&] { d.getStringList("word"); }, 3, "word",
+                "expected a sequence of strings, got 'pressure'");
+    expectError([&] { d.getStringList("nested"); }, 6, "nested[1]",
+                "expected a string, got a sequence");
+    expectError([&] { d.getStringList("missing"); }, 1, "missing", "missing required key");
+}
+
 // Error kinds
 
 TEST(Dictionary, MissingRequiredKey) {

@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/Log.hpp"
+#include "monitors/FunctionObject.hpp"
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+
+namespace mpm {
+
+/// `type: probes`: material point fields at fixed points (OpenFOAM's probes). The value at a
+/// probe x_k is the Shepard (normalised, mass-weighted) average of the point values within the
+/// radius R,
+///     f(x_k) = Σ w m_p f_p / Σ w m_p,  w = (1 − (r/R)²)² for r = |x_p − x_k| < R, else 0,
+/// which reproduces a constant field exactly, and a linear one on a point set symmetric about
+/// x_k. A probe with no point within R writes 0 (and warns once).
+///
+/// Keys: `fields` (default [pressure]): `pressure` −tr σ/3 [Pa], `density` m/V [kg/m³],
+/// `velocity` [m/s] (columns vx vy (vz)), `stress` σ [Pa] (columns xx yy zz xy (yz xz)),
+/// `plasticStrain` [-], or the name of any declared model scalar state; `probeLocations`
+/// (required, dim coordinates each, inside the grid box) [m]; `radius` R (default 1.5 h) [m].
+/// Columns `<field>_<k>` (scalars) and `<component>_<k>` (vectors, tensors), field by field,
+/// probe k = 0, 1, … within each field. The sums run over fixed chunks of points added in
+/// chunk order (the same for any thread count), only when a row is written: O(N × probes).
+template <int dim> class Probes final : public FunctionObject<dim> {
+public:
+    Probes(const Dictionary& dict, const std::string& name)
+        : FunctionObject<dim>(dict, name),
+          names_(dict.has("fields") ? dict.getStringList("fields")
+                                    : std::vector<std::string>{"pressure"}),
+          radius_(dict.has("radius") ? dict.getScalar("radius", Bounds::positive()) : 0.0) {
+        if (names_.empty()) dict.error("fields", "expected at least one field name");
+        for (std::size_t a = 0; a < names_.size(); ++a)
+            for (std::size_t b = 0; b < a; ++b)
+                if (names_[a] == names_[b])
+                    dict.error("fields", "field '" + names_[a] + "' is listed twice");
+        for (const auto& row : dict.vectorList("probeLocations", dim)) {
+            Vec<dim> x;
+            for (int d = 0; d < dim; ++d)
+                x[d] = row[d];
+            probes_.push_back(x);
+        }
+        if (probes_.empty()) dict.error("probeLocations", "expected at least one probe location");
+        warned_.assign(probes_.size(), 0);
+    }
+
+protected:
+    void initialise(const State<dim>& s, const Time&) override {
+        const Grid<dim>& g = s.grid;
+        for (std::size_t k = 0; k < probes_.size(); ++k) {
+            bool inside = true;
+            for (int d = 0; d < dim; ++d)
+                inside = inside && probes_[k][d] >= g.lo()[d] && probes_[k][d] <= g.hi()[d];
+            if (!inside) {
+                this->dict().error("probeLocations",
+                                   "probe " + std::to_string(k) + " " + point(probes_[k]) +
+                                       " is outside the grid box " + point(g.lo()) + " to " +
+                                       point(g.hi()) + " of constant/grid");
+            }
+        }
+        if (radius_ <= 0) radius_ = 1.5 * g.h();
+
+        const auto& p = s.particles;
+        fields_.clear();
+        width_ = 0;
+        for (const auto& n : names_) {
+            Field f{n, Kind::modelScalar, 0, {}};
+            if (n == "pressure")
+                f.kind = Kind::pressure;
+            else if (n == "density")
+                f.kind = Kind::density;
+            else if (n == "plasticStrain")
+                f.kind = Kind::plasticStrain;
+            else if (n == "velocity") {
+                f.kind = Kind::velocity;
+                for (int d = 0; d < dim; ++d)
+                    f.components.push_back(std::string("v") + "xyz"[d]);
+            } else if (n == "stress") {
+                f.kind = Kind::stress;
+                for (int c = 0; c < numStress; ++c)
+                    f.components.push_back(stressNames[c]);
+            } else {
+                const auto it = std::find_if(p.scalars.begin(), p.scalars.end(),
+                                             [&n](const auto& sf) { return sf.info.name == n; });
+                if (it == p.scalars.end()) {
+                    std::string valid = "pressure, density, velocity, stress, plasticStrain";
+                    for (const auto& sf : p.scalars)
+                        valid += ", " + sf.info.name;
+                    this->dict().error("fields",
+                                       "unknown field '" + n + "' (valid: " + valid + ")");
+                }
+                f.handle = static_cast<std::size_t>(it - p.scalars.begin());
+            }
+            width_ += std::max<int>(1, static_cast<int>(f.components.size()));
+            fields_.push_back(std::move(f));
+        }
+    }
+
+    std::vector<std::string> headerLines(const State<dim>&) const override {
+        std::vector<std::string> lines;
+        for (std::size_t k = 0; k < probes_.size(); ++k)
+            lines.push_back("probe " + std::to_string(k) + ": " + point(probes_[k]));
+        lines.push_back("radius: " + number(radius_));
+        return lines;
+    }
+
+    std::vector<std::string> columns(const State<dim>&) const override {
+        std::vector<std::string> c;
+        for (const auto& f : fields_)
+            for (std::size_t k = 0; k < probes_.size(); ++k) {
+                if (f.components.empty()) c.push_back(f.name + "_" + std::to_string(k));
+                for (const auto& comp : f.components)
+                    c.push_back(comp + "_" + std::to_string(k));
+            }
+        return c;
+    }
+
+    std::vector<double> values(const State<dim>& s) const override {
+        const auto& p = s.particles;
+        const Index n = static_cast<Index>(p.size());
+        const std::size_t np = probes_.size();
+        // Per probe: Σ w m, then Σ w m f for every component of every field.
+        const std::size_t stride = 1 + static_cast<std::size_t>(width_);
+        constexpr Index chunk = 4096;
+        const Index nChunks = (n + chunk - 1) / chunk;
+        std::vector<double> partial(static_cast<std::size_t>(nChunks) * np * stride, 0.0);
+        const double R2 = radius_ * radius_;
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index c = 0; c < nChunks; ++c) {
+            double* acc = partial.data() + static_cast<std::size_t>(c) * np * stride;
+            const Index end = std::min(n, (c + 1) * chunk);
+            for (Index i = c * chunk; i < end; ++i)
+                for (std::size_t k = 0; k < np; ++k) {
+                    const double r2 = (p.x[i] - probes_[k]).squaredNorm();
+                    if (!(r2 < R2)) continue;
+                    const double q = 1.0 - r2 / R2;
+                    const double wm = q * q * p.mass[i];
+                    double* a = acc + k * stride;
+                    a[0] += wm;
+                    accumulate(p, i, wm, a + 1);
+                }
+        }
+        std::vector<double> sum(np * stride, 0.0);
+        for (Index c = 0; c < nChunks; ++c)
+            for (std::size_t j = 0; j < sum.size(); ++j)
+                sum[j] += partial[static_cast<std::size_t>(c) * np * stride + j];
+
+        for (std::size_t k = 0; k < np; ++k)
+            if (!(sum[k * stride] > 0) && !warned_[k]) {
+                warned_[k] = 1;
+                warning() << "probes '" << this->name() << "': probe " << k << " "
+                          << point(probes_[k]) << " has no material point within radius " << radius_
+                          << " m at t = " << s.time
+                          << " s; its values are written as 0 (warned once per probe)\n";
+            }
+        std::vector<double> row;
+        row.reserve(np * static_cast<std::size_t>(width_));
+        int offset = 1;
+        for (const auto& f : fields_) {
+            const int nc = std::max<int>(1, static_cast<int>(f.components.size()));
+            for (std::size_t k = 0; k < np; ++k) {
+                const double w = sum[k * stride];
+                for (int j = 0; j < nc; ++j)
+                    row.push_back(w > 0 ? sum[k * stride + offset + j] / w : 0.0);
+            }
+            offset += nc;
+        }
+        return row;
+    }
+
+private:
+    enum class Kind { pressure, density, velocity, stress, plasticStrain, modelScalar };
+    struct Field {
+        std::string name;
+        Kind kind;
+        std::size_t handle;                  ///< index into Particles::scalars (modelScalar)
+        std::vector<std::string> components; ///< column prefixes (empty: a scalar)
+    };
+    /// Independent stress components: xx yy zz xy, and yz xz in 3D (σ_zz is carried in 2D).
+    static constexpr int numStress = dim == 3 ? 6 : 4;
+    static constexpr std::array<const char*, 6> stressNames{"xx", "yy", "zz", "xy", "yz", "xz"};
+    static constexpr std::array<std::array<int, 2>, 6> stressIndex{
+        {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}}};
+
+    /// a[j] += wm f_j for every component j of every field at point i, in column order.
+    void accumulate(const Particles<dim>& p, Index i, double wm, double* a) const {
+        for (const auto& f : fields_) {
+            switch (f.kind) {
+            case Kind::pressure:
+                *a++ += wm * (-p.stress[i].trace() / 3.0);
+                break;
+            case Kind::density:
+                *a++ += wm * (p.mass[i] / p.volume[i]);
+                break;
+            case Kind::velocity:
+                for (int d = 0; d < dim; ++d)
+                    *a++ += wm * p.v[i][d];
+                break;
+            case Kind::stress:
+                for (int c = 0; c < numStress; ++c)
+                    *a++ += wm * p.stress[i](stressIndex[c][0], stressIndex[c][1]);
+                break;
+            case Kind::plasticStrain:
+                *a++ += wm * p.plasticStrain[i];
+                break;
+            case Kind::modelScalar:
+                *a++ += wm * p.scalar(f.handle)[i];
+                break;
+            }
+        }
+    }
+
+    static std::string number(double v) {
+        std::ostringstream os;
+        os.precision(10);
+        os << v;
+        return os.str();
+    }
+    static std::string point(const Vec<dim>& x) {
+        std::string s = "(";
+        for (int d = 0; d < dim; ++d)
+            s += (d > 0 ? ", " : "") + number(x[d]);
+        return s + ")";
+    }
+
+    std::vector<std::string> names_;
+    double radius_; ///< R [m]; 0 until initialise() when not given (then 1.5 h)
+    std::vector<Vec<dim>> probes_;
+    std::vector<Field> fields_;
+    int width_ = 0;                    ///< columns per probe (all fields' components)
+    mutable std::vector<char> warned_; ///< probe k was reported empty
+};
+
+MPM_REGISTER(FunctionObjectRegistry<2>, Probes<2>, "probes");
+MPM_REGISTER(FunctionObjectRegistry<3>, Probes<3>, "probes");
+
+} // namespace mpm
