@@ -221,23 +221,22 @@ void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const PeriodicLattice
         forParticlesNear(body, Vec<dim>::Zero(), p, maxRadius_, sort, grid,
                          [&](Index i) { near_.push_back(i); });
     } else {
-        // Every image x_b + n∘L (n ∈ {−1, 0, 1} along periodic axes) whose ball reaches the
-        // box; a point is kept for the image nearest it only, so it is visited once, with the
+        // Every image x_b + n∘L that is the nearest image of some point of the box [lo, hi)
+        // (n from imageIndex(lo) to imageIndex(hi): at most two per axis for a centre in the
+        // box); a point is kept for the image nearest it only, so it is visited once, with the
         // image that alone can touch it (imagesFor: R + r_p < L/2).
         const Vec<dim>& centre = body.position();
-        IVec<dim> n = IVec<dim>::Zero();
-        for (int d = 0; d < dim; ++d)
-            if (images->periodic(d)) n[d] = -1;
+        const IVec<dim> first = images->imageIndex(grid.lo(), centre);
+        const IVec<dim> last = images->imageIndex(grid.hi(), centre);
+        IVec<dim> n = first;
         while (true) {
             const Vec<dim> shift = n.template cast<double>().cwiseProduct(images->period());
             forParticlesNear(body, shift, p, maxRadius_, sort, grid, [&](Index i) {
                 if (images->imageIndex(p.x[i], centre) == n) near_.push_back(i);
             });
             int d = 0;
-            while (d < dim && (!images->periodic(d) || ++n[d] > 1)) {
-                if (images->periodic(d)) n[d] = -1;
-                ++d;
-            }
+            while (d < dim && ++n[d] > last[d])
+                n[d] = first[d], ++d;
             if (d == dim) break;
         }
     }

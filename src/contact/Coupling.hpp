@@ -27,11 +27,12 @@ namespace mpm {
 ///
 /// Periodic faces: a body meets each point through the body's image nearest the point, i.e. at
 /// the point's image x' = PeriodicLattice::imageNear(x, x_b): φ(x'), v_b + ω × (x' − x_b), and
-/// force and torque with the lever arm x' − x_b. The broad phase searches around every image of
-/// the body that reaches the box (a point near xMax meets a body whose centre is just past
-/// xMin). This needs R + r_p < L/2 along each periodic axis (one image can touch a point); a
-/// moving body that is larger is an error, a larger fixed body (a terrain spanning the box) is
-/// coupled where it lies, without images. Without periodic faces none of this runs.
+/// force and torque with the lever arm x' − x_b. The broad phase searches around each image of
+/// the body that is the nearest image of some point of the box (a point near xMax meets a body
+/// whose centre is just past xMin). This needs R + r_p < L/2 along each periodic axis (one
+/// image can touch a point); a moving body that is larger is an error, a larger fixed body (a
+/// terrain spanning the box) is coupled where it lies, without images. Without periodic faces
+/// none of this runs.
 template <int dim> class Coupling {
 public:
     /// `laws[b]` is body b's law (nullptr: not coupled); `lattice` the periodic faces (none:

@@ -229,6 +229,11 @@ TEST(CouplingBroadPhase, PeriodicImagesMatchBruteForce2D) {
     // Centre just short of xMax, the other way.
     expectBruteForce<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\nposition: [0.99, 0.5]\n",
                         20000, 12, {true, false});
+    // A fixed body far outside the box (fixed bodies are not wrapped): its image at x = 0.7 is
+    // two periods away.
+    expectBruteForce<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\nmotion: fixed\n"
+                        "position: [-1.3, 0.5]\n",
+                        20000, 16, {true, false});
     // A box in a corner, periodic both ways: four images.
     expectBruteForce<2>("shape: {type: box, size: [0.4, 0.2]}\ndensity: 1\n"
                         "position: [0.97, 0.04]\norientation: 33\n",
