@@ -173,6 +173,14 @@ Vec<dim> PeriodicLattice<dim>::separation(const Vec<dim>& a, const Vec<dim>& b) 
     return s;
 }
 
+template <int dim>
+IVec<dim> PeriodicLattice<dim>::imageIndex(const Vec<dim>& x, const Vec<dim>& c) const {
+    IVec<dim> n = IVec<dim>::Zero();
+    for (int d = 0; d < dim; ++d)
+        if (periodic_[d]) n[d] = static_cast<int>(std::round((x[d] - c[d]) / period_[d]));
+    return n;
+}
+
 template class PeriodicLattice<2>;
 template class PeriodicLattice<3>;
 

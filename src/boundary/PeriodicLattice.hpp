@@ -6,6 +6,7 @@
 #include "particles/Particles.hpp"
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace mpm {
@@ -75,6 +76,18 @@ public:
     /// Shortest periodic separation a − b (minimum image: each periodic component in
     /// [−L/2, L/2]) [m].
     Vec<dim> separation(const Vec<dim>& a, const Vec<dim>& b) const;
+    /// Whole periods n (0 on non-periodic axes) such that x − n∘L is the image of x nearest c:
+    /// n = round((x − c)/L) per periodic axis.
+    IVec<dim> imageIndex(const Vec<dim>& x, const Vec<dim>& c) const;
+    /// The image of x nearest c, x − n∘L with n = imageIndex(x, c), so that each periodic
+    /// component of the result minus c lies in [−L/2, L/2]; x itself, bit for bit, along
+    /// non-periodic axes and when no shift is needed [m]. A body at c interacts with the image
+    /// of a point nearest it: φ(imageNear(x, c)), lever arm imageNear(x, c) − c.
+    Vec<dim> imageNear(Vec<dim> x, const Vec<dim>& c) const {
+        for (int d = 0; d < dim; ++d)
+            if (periodic_[d]) x[d] -= period_[d] * std::round((x[d] - c[d]) / period_[d]);
+        return x;
+    }
 
 private:
     IVec<dim> n_;

@@ -21,7 +21,8 @@ void ContactProbes<dim>::update(const std::vector<std::unique_ptr<RigidBody<dim>
 
 template <int dim>
 void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                       const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts) {
+                       const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts,
+                       const PeriodicLattice<dim>* periodic) {
     contacts.clear();
     const int n = static_cast<int>(bodies.size());
     for (int i = 0; i < n; ++i)
@@ -30,19 +31,31 @@ void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodie
             const RigidBody<dim>& b = *bodies[j];
             if (a.motion() == Motion::Fixed && b.motion() == Motion::Fixed) continue;
             const double reach = a.shape().boundingRadius() + b.shape().boundingRadius();
-            if ((a.position() - b.position()).squaredNorm() >= reach * reach) continue;
+            // Minimum image only where one image alone can touch (2 reach < L).
+            bool image = periodic != nullptr;
+            for (int d = 0; d < dim && image; ++d)
+                image = !periodic->periodic(d) || 2 * reach < periodic->period()[d];
+            const Vec<dim> ab = image ? periodic->separation(a.position(), b.position())
+                                      : a.position() - b.position();
+            if (ab.squaredNorm() >= reach * reach) continue;
             const bool aProbes = probes.points[i].size() <= probes.points[j].size();
             const RigidBody<dim>& prober = aProbes ? a : b;
             const RigidBody<dim>& target = aProbes ? b : a;
             const std::vector<Vec<dim>>& points = probes.points[aProbes ? i : j];
             const std::vector<double>& radii = probes.radii[aProbes ? i : j];
+            // The prober's image nearest the target, and back: shift = x_p − image.
+            const Vec<dim> origin = image
+                                        ? periodic->imageNear(prober.position(), target.position())
+                                        : prober.position();
+            const Vec<dim> shift = prober.position() - origin;
             for (std::size_t k = 0; k < points.size(); ++k) {
-                const Vec<dim> x = prober.position() + prober.rotation() * points[k];
+                const Vec<dim> x = origin + prober.rotation() * points[k];
                 Vec<dim> normal;
                 const double overlap = radii[k] - target.distance(x, normal);
                 if (overlap <= 0) continue;
+                const Vec<dim> c = x - (radii[k] - 0.5 * overlap) * normal;
                 contacts.push_back({aProbes ? i : j, aProbes ? j : i, static_cast<int>(k), overlap,
-                                    normal, x - (radii[k] - 0.5 * overlap) * normal});
+                                    normal, c, image ? Vec<dim>(c + shift) : c});
             }
         }
 }
@@ -85,12 +98,12 @@ public:
 
     void addForces(BodyList& bodies, ContactHistory<dim>& history, double dt) override {
         probes_.update(bodies);
-        findProbeContacts(bodies, probes_, contacts_);
+        findProbeContacts(bodies, probes_, contacts_, this->periodic_);
         ContactHistory<dim> next;
         for (const ProbeContact<dim>& c : contacts_) {
             RigidBody<dim>& p = *bodies[c.prober];
             RigidBody<dim>& t = *bodies[c.target];
-            const Vec<dim> vRel = p.velocityAt(c.point) - t.velocityAt(c.point);
+            const Vec<dim> vRel = p.velocityAt(c.proberPoint) - t.velocityAt(c.point);
             const double vn = vRel.dot(c.normal);
             double fn = kn_ * c.overlap;
             if (zeta_ > 0) fn -= 2.0 * zeta_ * std::sqrt(kn_ * reducedMass(p, t)) * vn;
@@ -108,7 +121,7 @@ public:
             }
             next[key] = xi;
             const Vec<dim> f = fn * c.normal + ft;
-            p.addForce(f, c.point);
+            p.addForce(f, c.proberPoint);
             t.addForce(-f, c.point);
         }
         history.swap(next);
@@ -154,8 +167,10 @@ template class BodyContactLaw<3>;
 template struct ContactProbes<2>;
 template struct ContactProbes<3>;
 template void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<2>>>&,
-                                const ContactProbes<2>&, std::vector<ProbeContact<2>>&);
+                                const ContactProbes<2>&, std::vector<ProbeContact<2>>&,
+                                const PeriodicLattice<2>*);
 template void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<3>>>&,
-                                const ContactProbes<3>&, std::vector<ProbeContact<3>>&);
+                                const ContactProbes<3>&, std::vector<ProbeContact<3>>&,
+                                const PeriodicLattice<3>*);
 
 } // namespace mpm

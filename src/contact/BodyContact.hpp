@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "boundary/PeriodicLattice.hpp"
 #include "case/Dictionary.hpp"
 #include "core/Registry.hpp"
 #include "rigid/RigidBody.hpp"
@@ -24,6 +25,9 @@ template <int dim> using ContactHistory = std::map<std::array<int, 3>, Vec<dim>>
 /// δ = r − φ(x) > 0; the normal n = ∇φ points out of the target, the contact point is
 /// c = x − (r − δ/2) n. A ball probes with its centre and radius, so contact with a ball is
 /// exact. Pairs are found by bounding spheres (O(N²): the DEM issue brings neighbour lists).
+/// With periodic faces (setPeriodic) a pair meets through its minimum image: the prober's
+/// image nearest the target (PeriodicLattice::separation of the centres), if R_a + R_b < L/2
+/// along every periodic axis (otherwise, e.g. with a terrain spanning the box, where they lie).
 template <int dim> class BodyContactLaw {
 public:
     using BodyList = std::vector<std::unique_ptr<RigidBody<dim>>>;
@@ -36,8 +40,17 @@ public:
     /// The stable step of this law for these bodies [s].
     virtual double stableDeltaT(const BodyList& bodies) const = 0;
 
+    /// Pairs meet through their minimum image across the periodic faces of `lattice` (kept by
+    /// reference; no effect without a periodic axis).
+    void setPeriodic(const PeriodicLattice<dim>& lattice) {
+        periodic_ = lattice.any() ? &lattice : nullptr;
+    }
+
     /// Build the law named by `type:` (linearSpring).
     static std::unique_ptr<BodyContactLaw> create(const Dictionary& dict);
+
+protected:
+    const PeriodicLattice<dim>* periodic_ = nullptr; ///< null without periodic faces
 };
 
 template <int dim> using BodyContactRegistry = Registry<BodyContactLaw<dim>>;
@@ -45,9 +58,10 @@ template <int dim> using BodyContactRegistry = Registry<BodyContactLaw<dim>>;
 /// One probe–target contact of a step (world frame).
 template <int dim> struct ProbeContact {
     int prober, target, probe;
-    double overlap;  ///< δ > 0 [m]
-    Vec<dim> normal; ///< out of the target
-    Vec<dim> point;  ///< c
+    double overlap;       ///< δ > 0 [m]
+    Vec<dim> normal;      ///< out of the target
+    Vec<dim> point;       ///< c (at the target)
+    Vec<dim> proberPoint; ///< c on the prober's side of a periodic seam (c itself without one)
 };
 
 /// The contact probes (Shape::contactProbes) of each body, in its body frame: fixed for a rigid
@@ -59,9 +73,11 @@ template <int dim> struct ContactProbes {
     void update(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies);
 };
 
-/// Every touching probe of every pair i < j of `bodies` (fixed pairs skipped), in a fixed order.
+/// Every touching probe of every pair i < j of `bodies` (fixed pairs skipped), in a fixed order;
+/// with `periodic`, through the minimum image of each pair (BodyContactLaw).
 template <int dim>
 void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                       const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts);
+                       const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts,
+                       const PeriodicLattice<dim>* periodic = nullptr);
 
 } // namespace mpm

@@ -1,26 +1,48 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/Coupling.hpp"
 
+#include "core/Error.hpp"
 #include "core/Parallel.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace mpm {
 
 template <int dim>
-Coupling<dim>::Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws)
-    : laws_(std::move(laws)) {}
+Coupling<dim>::Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws,
+                        const PeriodicLattice<dim>* lattice)
+    : laws_(std::move(laws)), lattice_(lattice && lattice->any() ? lattice : nullptr) {}
+
+template <int dim>
+const PeriodicLattice<dim>* Coupling<dim>::imagesFor(const RigidBody<dim>& body) const {
+    if (!lattice_) return nullptr;
+    const double reach = body.shape().boundingRadius() + maxRadius_;
+    for (int d = 0; d < dim; ++d) {
+        if (!lattice_->periodic(d) || 2 * reach < lattice_->period()[d]) continue;
+        if (body.motion() == Motion::Fixed) return nullptr; // coupled where it lies
+        std::ostringstream os;
+        os << "rigid body '" << body.name() << "': its bounding radius "
+           << body.shape().boundingRadius() << " m plus the coupling radius " << maxRadius_
+           << " m is not less than half the period " << lattice_->period()[d]
+           << " m: a point could touch two of its periodic images";
+        throw RunError(os.str());
+    }
+    return lattice_;
+}
 
 template <int dim>
 template <class Fn>
-void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Particles<dim>& p,
-                                     double reach, const BlockSort<dim>& sort,
-                                     const Grid<dim>& grid, Fn&& fn) const {
+void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Vec<dim>& shift,
+                                     const Particles<dim>& p, double reach,
+                                     const BlockSort<dim>& sort, const Grid<dim>& grid,
+                                     Fn&& fn) const {
     // Called right after the sort: every point lies in its block. Blocks of the ball's bounding
     // box, then two culls by the distance φ (1-Lipschitz, one cell of margin for a sampled
     // field): a block whose centre is farther than its half-diagonal + h + reach, then, inside a
-    // kept block, the 2^dim half-blocks (2 cells a side) likewise.
-    const Vec<dim>& centre = body.position();
+    // kept block, the 2^dim half-blocks (2 cells a side) likewise. The body's image at
+    // x_b + shift: φ(y) of that image is the body's φ(y − shift).
+    const Vec<dim> centre = body.position() + shift;
     const double radius = body.shape().boundingRadius() + reach;
     const double size = Grid<dim>::BlockSize * grid.h();
     const double halfDiagonal = 0.5 * size * std::sqrt(double(dim));
@@ -46,14 +68,15 @@ void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Particles
             for (int d = 0; d < dim; ++d)
                 corner[d] = grid.origin()[d] + c[d] * size;
             Vec<dim> normal;
-            if (body.distance(corner + Vec<dim>::Constant(0.5 * size), normal) <=
+            if (body.distance(corner + Vec<dim>::Constant(0.5 * size) - shift, normal) <=
                 halfDiagonal + margin) {
                 int keep = 0; // bit q: half-block q (bit d of q: upper half along d) is near
                 for (int q = 0; q < NumHalves; ++q) {
                     Vec<dim> half = corner;
                     for (int d = 0; d < dim; ++d)
                         half[d] += ((q >> d) & 1 ? 0.75 : 0.25) * size;
-                    if (body.distance(half, normal) <= 0.5 * halfDiagonal + margin) keep |= 1 << q;
+                    if (body.distance(half - shift, normal) <= 0.5 * halfDiagonal + margin)
+                        keep |= 1 << q;
                 }
                 for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
                     const Index i = order[j];
@@ -86,8 +109,9 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
         std::vector<double>& slip = p.scalar(slip_[b]);
+        const PeriodicLattice<dim>* images = imagesFor(body);
         // Narrow phase in parallel over the broad phase's points, kept in their order.
-        nearPoints(body, p, sort, grid);
+        nearPoints(body, images, p, sort, grid);
         contacts_.clear();
         for (std::size_t k = 0; k < near_.size(); ++k) {
             const Index i = near_[k];
@@ -97,14 +121,15 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
                 continue;
             }
             const int m = p.material[i];
-            contacts_.push_back({i, phi_[k], normals_[k], p.v[i] - body.velocityAt(p.x[i]), rp,
+            contacts_.push_back({i, phi_[k], normals_[k],
+                                 p.v[i] - body.velocityAt(imageOf(images, p.x[i], body)), rp,
                                  p.mass[i], wave[m]});
         }
         forces_.resize(contacts_.size());
         laws_[b]->forces(contacts_, dt, slip, forces_);
         for (std::size_t k = 0; k < contacts_.size(); ++k) {
             const Index i = contacts_[k].particle;
-            body.addForce(-forces_[k], p.x[i]);
+            body.addForce(-forces_[k], imageOf(images, p.x[i], body));
             const int m = p.material[i];
             const bool gasified = p.mass[i] < criticalDensity[m] * p.volume[i];
             (gasified ? localPoints_ : gridPoints_).push_back(i);
@@ -136,6 +161,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
     for (std::size_t b = 0; b < bodies.size() && b < nearOf_.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
+        const PeriodicLattice<dim>* images = imagesFor(body);
         const CouplingLaw<dim>& law = *laws_[b];
         const std::vector<Index>& near = nearOf_[b];
         const std::vector<double>& phi0 = phiOf_[b];
@@ -157,7 +183,7 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
                 continue;
             }
             Vec<dim> nk;
-            const double phi = body.distance(p.x[i], nk);
+            const double phi = body.distance(imageOf(images, p.x[i], body), nk);
             minGapBefore = std::min(minGapBefore, phi);
             if (phi >= gap) {
                 minGap = std::min(minGap, phi);
@@ -167,17 +193,18 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
             // loses goes to the body (below, in order: deterministic).
             p.x[i] += (gap - phi) * nk;
             push = std::max(push, gap - phi);
-            const double vn = (p.v[i] - body.velocityAt(p.x[i])).dot(nk);
+            const double vn = (p.v[i] - body.velocityAt(imageOf(images, p.x[i], body))).dot(nk);
             if (vn < 0) {
                 p.v[i] -= vn * nk;
                 impulses_[k] = p.mass[i] * vn * nk;
             }
             ++moved;
             Vec<dim> n2;
-            minGap = std::min(minGap, body.distance(p.x[i], n2));
+            minGap = std::min(minGap, body.distance(imageOf(images, p.x[i], body), n2));
         }
         for (Index k = 0; k < n; ++k)
-            if (impulses_[k].squaredNorm() > 0) body.applyImpulse(impulses_[k], p.x[near[k]]);
+            if (impulses_[k].squaredNorm() > 0)
+                body.applyImpulse(impulses_[k], imageOf(images, p.x[near[k]], body));
         pushed += push;
     }
     minGap_ = minGap;
@@ -186,16 +213,39 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
 }
 
 template <int dim>
-void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const Particles<dim>& p,
-                               const BlockSort<dim>& sort, const Grid<dim>& grid) {
+void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const PeriodicLattice<dim>* images,
+                               const Particles<dim>& p, const BlockSort<dim>& sort,
+                               const Grid<dim>& grid) {
     near_.clear();
-    forParticlesNear(body, p, maxRadius_, sort, grid, [&](Index i) { near_.push_back(i); });
+    if (!images) {
+        forParticlesNear(body, Vec<dim>::Zero(), p, maxRadius_, sort, grid,
+                         [&](Index i) { near_.push_back(i); });
+    } else {
+        // Every image x_b + n∘L that is the nearest image of some point of the box [lo, hi)
+        // (n from imageIndex(lo) to imageIndex(hi): at most two per axis for a centre in the
+        // box); a point is kept for the image nearest it only, so it is visited once, with the
+        // image that alone can touch it (imagesFor: R + r_p < L/2).
+        const Vec<dim>& centre = body.position();
+        const IVec<dim> first = images->imageIndex(grid.lo(), centre);
+        const IVec<dim> last = images->imageIndex(grid.hi(), centre);
+        IVec<dim> n = first;
+        while (true) {
+            const Vec<dim> shift = n.template cast<double>().cwiseProduct(images->period());
+            forParticlesNear(body, shift, p, maxRadius_, sort, grid, [&](Index i) {
+                if (images->imageIndex(p.x[i], centre) == n) near_.push_back(i);
+            });
+            int d = 0;
+            while (d < dim && ++n[d] > last[d])
+                n[d] = first[d], ++d;
+            if (d == dim) break;
+        }
+    }
     const Index n = static_cast<Index>(near_.size());
     phi_.resize(n);
     normals_.resize(n);
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
     for (Index k = 0; k < n; ++k)
-        phi_[k] = body.distance(p.x[near_[k]], normals_[k]);
+        phi_[k] = body.distance(imageOf(images, p.x[near_[k]], body), normals_[k]);
 }
 
 template <int dim>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "boundary/PeriodicLattice.hpp"
 #include "contact/CouplingLaw.hpp"
 #include "grid/Grid.hpp"
 #include "particles/BlockSort.hpp"
@@ -23,10 +24,21 @@ namespace mpm {
 /// by Δt f/m_p after G2P) and transfers nothing to the grid. After the bodies move, points of
 /// non-penetrating (barrier) bodies closer than ξ_min are projected back to ξ_min and lose
 /// their approaching normal velocity, so no point ever ends a step inside such a body.
+///
+/// Periodic faces: a body meets each point through the body's image nearest the point, i.e. at
+/// the point's image x' = PeriodicLattice::imageNear(x, x_b): φ(x'), v_b + ω × (x' − x_b), and
+/// force and torque with the lever arm x' − x_b. The broad phase searches around each image of
+/// the body that is the nearest image of some point of the box (a point near xMax meets a body
+/// whose centre is just past xMin). This needs R + r_p < L/2 along each periodic axis (one
+/// image can touch a point); a moving body that is larger is an error, a larger fixed body (a
+/// terrain spanning the box) is coupled where it lies, without images. Without periodic faces
+/// none of this runs.
 template <int dim> class Coupling {
 public:
-    /// `laws[b]` is body b's law (nullptr: not coupled).
-    explicit Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws);
+    /// `laws[b]` is body b's law (nullptr: not coupled); `lattice` the periodic faces (none:
+    /// nullptr, or a lattice with no periodic axis).
+    explicit Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws,
+                      const PeriodicLattice<dim>* lattice = nullptr);
 
     bool empty() const { return laws_.empty(); }
 
@@ -92,17 +104,30 @@ private:
     /// surface than their half-diagonal + h + reach (φ is a distance: no point there can be
     /// within reach; h is a margin for a sampled field). The narrow phase then costs per point
     /// near the surface, not per point inside the bounding ball (a terrain's ball holds them all).
+    /// `shift`: search around the body's periodic image x_b + shift (zero: the body itself).
     template <class Fn>
-    void forParticlesNear(const RigidBody<dim>& body, const Particles<dim>& p, double reach,
-                          const BlockSort<dim>& sort, const Grid<dim>& grid, Fn&& fn) const;
+    void forParticlesNear(const RigidBody<dim>& body, const Vec<dim>& shift,
+                          const Particles<dim>& p, double reach, const BlockSort<dim>& sort,
+                          const Grid<dim>& grid, Fn&& fn) const;
 
-    /// The points the broad phase keeps for `body` (near_, in block order) with their signed
-    /// distance phi_ and normal normals_, evaluated in parallel.
-    void nearPoints(const RigidBody<dim>& body, const Particles<dim>& p, const BlockSort<dim>& sort,
-                    const Grid<dim>& grid);
+    /// The points the broad phase keeps for `body` (near_, in block order; with `images`, image
+    /// by image) with their signed distance phi_ and normal normals_, evaluated in parallel.
+    void nearPoints(const RigidBody<dim>& body, const PeriodicLattice<dim>* images,
+                    const Particles<dim>& p, const BlockSort<dim>& sort, const Grid<dim>& grid);
+
+    /// The lattice whose images `body` meets points through, or nullptr (no periodic face, or a
+    /// fixed body too large for one image); throws RunError for a moving body with
+    /// 2 (R + r_p,max) ≥ L along a periodic axis.
+    const PeriodicLattice<dim>* imagesFor(const RigidBody<dim>& body) const;
+    /// The image of point x nearest the body's centre (x itself when `images` is null).
+    static Vec<dim> imageOf(const PeriodicLattice<dim>* images, const Vec<dim>& x,
+                            const RigidBody<dim>& body) {
+        return images ? images->imageNear(x, body.position()) : x;
+    }
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
-    std::vector<std::size_t> slip_; ///< per body: handle of its slip field in the particles
+    const PeriodicLattice<dim>* lattice_; ///< null without periodic faces
+    std::vector<std::size_t> slip_;       ///< per body: handle of its slip field in the particles
     std::vector<Index> near_;
     std::vector<double> phi_;
     std::vector<Vec<dim>> normals_;

@@ -11,7 +11,9 @@
 
 namespace mpm {
 
-template <int dim> BodySet<dim>::BodySet(const Case& cs, const Grid<dim>& grid) {
+template <int dim>
+BodySet<dim>::BodySet(const Case& cs, const Grid<dim>& grid, const PeriodicLattice<dim>* lattice)
+    : lattice_(lattice && lattice->any() ? lattice : nullptr) {
     if (!cs.exists("constant/rigidBodies")) return;
     const Dictionary dict = cs.read("constant/rigidBodies");
     for (const std::string& name : dict.keys()) {
@@ -38,17 +40,38 @@ template <int dim> BodySet<dim>::BodySet(const Case& cs, const Grid<dim>& grid) 
             if (x < grid.lo()[d] || x > grid.hi()[d])
                 bd.error("position", "the centre of a moving body lies outside the grid bounds");
         }
+        // Periodic faces: the coupling meets a point through the body's image nearest it, which
+        // must be the only one that can touch it.
+        for (int d = 0; d < dim && lattice_ && body.motion() != Motion::Fixed; ++d) {
+            const double period = lattice_->period()[d];
+            if (!lattice_->periodic(d) || body.shape().boundingRadius() + grid.h() < 0.5 * period)
+                continue;
+            std::ostringstream os;
+            os << "a moving body across periodic faces must be smaller than half the period: its "
+                  "bounding radius "
+               << body.shape().boundingRadius() << " m plus the cell size " << grid.h()
+               << " m must be less than L/2 = " << 0.5 * period << " m along "
+               << "xyz"[d] << " (enlarge the periodic box)";
+            bd.error("shape", os.str());
+        }
     }
     dict.checkUnknownKeys();
     if (cs.exists("constant/bodyContact")) {
         auto law = BodyContactLaw<dim>::create(cs.read("constant/bodyContact"));
         if (bodies_.size() >= 2) contact_ = std::move(law);
+        if (contact_ && lattice_) contact_->setPeriodic(*lattice_);
     }
 }
 
 template <int dim> void BodySet<dim>::clearForces() {
     for (auto& b : bodies_)
         b->clearForces();
+}
+
+template <int dim> void BodySet<dim>::wrap() {
+    if (!lattice_) return;
+    for (auto& b : bodies_)
+        if (b->motion() != Motion::Fixed) b->movePositionTo(lattice_->wrapPosition(b->position()));
 }
 
 template <int dim> void BodySet<dim>::advance(double dt, double t, const Vec<dim>& g) {
@@ -85,6 +108,7 @@ std::string BodySet<dim>::check(const Grid<dim>& grid,
         const double r = b->shape().boundingRadius();
         for (int f = 0; f < Grid<dim>::NumFaces && b->motion() != Motion::Fixed; ++f) {
             const int a = f / 2;
+            if (lattice_ && lattice_->periodic(a)) continue; // wrapped at the next step
             const bool beyond = f % 2 == 0 ? b->position()[a] < grid.lo()[a] - r
                                            : b->position()[a] > grid.hi()[a] + r;
             if (beyond && !open(f, b->position()))

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "boundary/PeriodicLattice.hpp"
 #include "case/Case.hpp"
 #include "contact/BodyContact.hpp"
 #include "contact/CouplingLaw.hpp"
@@ -23,6 +24,10 @@ namespace mpm {
 /// sub-step: n = ⌈Δt/Δt_c⌉ steps of Δt/n with the law's stable step Δt_c, contact forces
 /// recomputed each sub-step and the coupling forces of the MPM step held. The contact history
 /// (tangential springs) is part of the restart state (`<time>/uniform/bodyContacts`).
+///
+/// Periodic faces: a moving body whose centre has crossed a seam is moved back by the period at
+/// the start of a step (wrap), as points are; bodies meet each other through their minimum
+/// image (BodyContactLaw) and are never reported as through a periodic face (check).
 template <int dim> class BodySet {
 public:
     using List = std::vector<std::unique_ptr<RigidBody<dim>>>;
@@ -30,7 +35,10 @@ public:
     /// Read constant/rigidBodies (no bodies when the file is absent) and each body's coupling to
     /// the material (`coupling`, default `{type: barrier}`); `grid` checks that a moving body
     /// starts with its centre inside it and warns about level sets coarser than it [004 §5.2].
-    BodySet(const Case& cs, const Grid<dim>& grid);
+    /// `lattice`: the periodic faces (kept by reference; nullptr: none). Along a periodic axis a
+    /// moving body must have R + h < L/2 (bounding radius R, cell size h, period L): a point
+    /// then touches one image of it at most.
+    BodySet(const Case& cs, const Grid<dim>& grid, const PeriodicLattice<dim>* lattice = nullptr);
 
     bool empty() const { return bodies_.empty(); }
     const List& bodies() const { return bodies_; }
@@ -40,6 +48,10 @@ public:
     std::vector<std::unique_ptr<CouplingLaw<dim>>> takeCouplingLaws() { return std::move(laws_); }
 
     void clearForces();
+    /// Periodic faces: move every moving body whose centre lies outside [lo, hi) along a periodic
+    /// axis back by whole periods (PeriodicLattice::wrapPosition); orientation and velocities
+    /// unchanged. Nothing without periodic faces.
+    void wrap();
     /// True if body–body contact runs (a law and at least two bodies).
     bool hasContact() const { return contact_ != nullptr; }
     const ContactHistory<dim>& contactHistory() const { return history_; }
@@ -47,8 +59,8 @@ public:
     /// (sub-stepping with body–body contact).
     void advance(double dt, double t, const Vec<dim>& g);
     /// A body whose state is not finite or which has passed through a walled grid face (bodies
-    /// do not collide with the walls; one leaving through an open face flies on): what is
-    /// wrong, or empty.
+    /// do not collide with the walls; one leaving through an open face flies on, one crossing a
+    /// periodic face is wrapped at the next step): what is wrong, or empty.
     /// `open(face, x)`: whether face `face` lets a body at x through.
     std::string check(const Grid<dim>& grid,
                       const std::function<bool(int, const Vec<dim>&)>& open) const;
@@ -70,6 +82,7 @@ public:
 
 private:
     List bodies_;
+    const PeriodicLattice<dim>* lattice_ = nullptr; ///< null without periodic faces
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
     std::unique_ptr<BodyContactLaw<dim>> contact_;
     ContactHistory<dim> history_;

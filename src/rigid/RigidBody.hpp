@@ -59,6 +59,9 @@ public:
     Vec3 angularVelocity() const;
     /// Rotation body → world A^n [004 Eq. 32].
     const Mat<dim>& rotation() const { return R_; }
+    /// Move the centroid to x, orientation and velocities unchanged (a wrap across a periodic
+    /// seam: x differs from position() by whole periods) [m].
+    void movePositionTo(const Vec<dim>& x) { x_ = x; }
 
     /// Signed distance [m] and outward normal (world frame) of world point x.
     double distance(const Vec<dim>& x, Vec<dim>& normal) const {

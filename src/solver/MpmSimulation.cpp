@@ -18,7 +18,8 @@ namespace mpm {
 template <int dim>
 MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
                                   const Dictionary& gridDict)
-    : case_(cs), options_(options), grid_(gridDict), bc_(gridDict, grid_), bodies_(cs, grid_),
+    : case_(cs), options_(options), grid_(gridDict), bc_(gridDict, grid_),
+      bodies_(cs, grid_, &bc_.lattice()),
       writer_(cs, bodies_.empty() ? std::vector<std::string>{"particles"}
                                   : std::vector<std::string>{"particles", "rigidBodies"}) {
     gridDict.checkUnknownKeys();
@@ -37,7 +38,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         m->declareState(particles_);
     }
     if (!bodies_.empty()) {
-        coupling_ = std::make_unique<Coupling<dim>>(bodies_.takeCouplingLaws());
+        coupling_ = std::make_unique<Coupling<dim>>(bodies_.takeCouplingLaws(), &bc_.lattice());
         coupling_->declareState(particles_, bodies_.bodies());
     }
 
@@ -201,6 +202,7 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
     auto timer = timer_(PhaseTimer::Sort);
     const double t = preloading_ ? time_->value() : time_->value() - dt_;
     bc_.wrap(particles_); // periodic faces: back across the seam
+    bodies_.wrap();
     if (bc_.hasOpen())
         if (const Index left = bc_.removeOutflow(particles_, t)) {
             buildMaterialLists();

@@ -299,6 +299,30 @@ TEST(PeriodicLattice, MinimumImageSeparation) {
     EXPECT_FALSE(s.bc.periodic(0));
 }
 
+TEST(PeriodicLattice, ImageNearestACentre) {
+    Scene<3> s("bounds: {min: [0, 0, 0], max: [1, 2, 1]}\ncellSize: 0.25\n",
+               "boundary: {yMin: periodic, yMax: periodic}\n");
+    const PeriodicLattice<3>& l = s.bc.lattice();
+    // A point near yMax seen from a centre just past yMin: one period down along y only.
+    const Vec<3> x(0.9, 1.95, 0.7), c(0.1, 0.05, 0.2);
+    EXPECT_EQ(l.imageIndex(x, c), IVec<3>(0, 1, 0));
+    EXPECT_NEAR((l.imageNear(x, c) - Vec<3>(0.9, -0.05, 0.7)).norm(), 0, 1e-15);
+    // imageNear(x, c) − c is the minimum-image separation.
+    EXPECT_NEAR((l.imageNear(x, c) - c - l.separation(x, c)).norm(), 0, 1e-15);
+    // Several periods away, and the other way.
+    EXPECT_EQ(l.imageIndex(Vec<3>(0, 6.3, 0), Vec<3>(0, 0.1, 0)), IVec<3>(0, 3, 0));
+    EXPECT_EQ(l.imageIndex(Vec<3>(0, 0.1, 0), Vec<3>(0, 1.9, 0)), IVec<3>(0, -1, 0));
+    EXPECT_NEAR(l.imageNear(Vec<3>(0, 0.1, 0), Vec<3>(0, 1.9, 0))[1], 2.1, 1e-15);
+    // No shift: x itself, bit for bit (non-periodic x and z are never touched).
+    const Vec<3> y(std::nextafter(0.3, 1.0), 1.2345678901234567, -7.0);
+    EXPECT_EQ(l.imageNear(y, Vec<3>(5.0, 1.0, 3.0)), y);
+    EXPECT_EQ(l.imageIndex(y, Vec<3>(5.0, 1.0, 3.0)), IVec<3>::Zero());
+    // Without periodic faces: the identity.
+    Scene<2> closed("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\n", "");
+    EXPECT_EQ(closed.bc.lattice().imageNear(Vec<2>(0.99, 0.01), Vec<2>(0.01, 0.99)),
+              Vec<2>(0.99, 0.01));
+}
+
 TEST(PeriodicLattice, ConditionsOnOtherFacesFollowTheOwners) {
     // x periodic, yMin no-slip with a boxed open patch at the seam's low side: images of
     // orifice nodes (beyond xMax) belong to the orifice, and only owners count in reactions.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/BodyContact.hpp"
+#include "grid/Grid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -139,6 +140,58 @@ TEST(BodyContactTest, UnknownTypeListsTheValidOnes) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("linearSpring"), std::string::npos);
     }
+}
+
+/// Forces and torques after two passes (with friction history) of two bodies, one of them a
+/// box so that the lever arm matters; pairs meet through the minimum image of `lattice`.
+template <int dim>
+std::vector<std::pair<Vec<dim>, Vec3>> pairForces(const std::string& a, const std::string& b,
+                                                  const PeriodicLattice<dim>* lattice) {
+    Bodies<dim> bodies;
+    bodies.push_back(body<dim>(a));
+    bodies.push_back(body<dim>(b));
+    auto l = law<dim>("{type: linearSpring, normalStiffness: 1e5, friction: 0.5}");
+    if (lattice) l->setPeriodic(*lattice);
+    ContactHistory<dim> h;
+    for (int k = 0; k < 2; ++k) {
+        for (auto& x : bodies)
+            x->clearForces();
+        l->addForces(bodies, h, 1e-4);
+    }
+    EXPECT_FALSE(h.empty());
+    return {{bodies[0]->force(), bodies[0]->torque()}, {bodies[1]->force(), bodies[1]->torque()}};
+}
+
+TEST(BodyContactTest, PeriodicPairMeetsThroughTheMinimumImage) {
+    const Grid<2> grid(Dictionary::fromString(
+        "bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.05\n", "constant/grid"));
+    const PeriodicLattice<2> lattice(grid, {true, false});
+    const std::string box = "{shape: {type: box, halfExtents: [0.1, 0.05]}, density: 2000, "
+                            "orientation: 25, velocity: [0.3, 0.1], angularVelocity: 2, ";
+    const std::string disk = "{shape: {type: disk, radius: 0.05}, density: 1000, "
+                             "velocity: [-0.2, 0], ";
+    // Reference: side by side in mid-box, no seam.
+    const auto ref =
+        pairForces<2>(box + "position: [0.45, 0.5]}", disk + "position: [0.58, 0.53]}", nullptr);
+    ASSERT_GT(ref[0].first.norm(), 0);
+    // The same pair across the seam: box centre at 0.95, disk centre at 1.08 - 1 = 0.08.
+    const auto per =
+        pairForces<2>(box + "position: [0.95, 0.5]}", disk + "position: [0.08, 0.53]}", &lattice);
+    for (int b = 0; b < 2; ++b) {
+        EXPECT_LE((per[b].first - ref[b].first).norm(), 1e-9 * ref[b].first.norm()) << b;
+        EXPECT_LE((per[b].second - ref[b].second).norm(), 1e-9 * ref[0].second.norm()) << b;
+    }
+    // Without the lattice they do not touch.
+    Bodies<2> apart;
+    apart.push_back(body<2>(box + "position: [0.95, 0.5]}"));
+    apart.push_back(body<2>(disk + "position: [0.08, 0.53]}"));
+    ContactProbes<2> probes;
+    probes.update(apart);
+    std::vector<ProbeContact<2>> contacts;
+    findProbeContacts(apart, probes, contacts);
+    EXPECT_TRUE(contacts.empty());
+    findProbeContacts(apart, probes, contacts, &lattice);
+    EXPECT_FALSE(contacts.empty());
 }
 
 } // namespace

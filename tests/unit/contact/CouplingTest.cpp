@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -29,9 +30,11 @@ template <int dim> Grid<dim> unitGrid() {
 
 /// `n` points: half uniform over the grid, half in the body's bounding box grown by 2 r_p,max
 /// (many near its surface), with volumes V⁰ ∈ [0.2, 1] (h/2)^dim, so r_p differs per point.
+/// With `lattice`, the second half is drawn around the body without clipping and wrapped into
+/// the box (points near the body's periodic images).
 template <int dim>
 Particles<dim> randomCloud(const Grid<dim>& g, const RigidBody<dim>& body, int n,
-                           std::uint64_t seed) {
+                           std::uint64_t seed, const PeriodicLattice<dim>* lattice = nullptr) {
     Particles<dim> p;
     p.resize(n);
     std::mt19937_64 rng(seed);
@@ -39,10 +42,16 @@ Particles<dim> randomCloud(const Grid<dim>& g, const RigidBody<dim>& body, int n
     const double reach = body.shape().boundingRadius() + 2 * 0.5 * H;
     for (int i = 0; i < n; ++i) {
         for (int d = 0; d < dim; ++d) {
-            const double lo = i % 2 ? std::max(g.lo()[d], body.position()[d] - reach) : g.lo()[d];
-            const double hi = i % 2 ? std::min(g.hi()[d], body.position()[d] + reach) : g.hi()[d];
+            const bool open = lattice && lattice->periodic(d);
+            const double lo = i % 2 ? (open ? body.position()[d] - reach
+                                            : std::max(g.lo()[d], body.position()[d] - reach))
+                                    : g.lo()[d];
+            const double hi = i % 2 ? (open ? body.position()[d] + reach
+                                            : std::min(g.hi()[d], body.position()[d] + reach))
+                                    : g.hi()[d];
             p.x[i][d] = lo + u(rng) * (hi - lo);
         }
+        if (lattice) p.x[i] = lattice->wrapPosition(p.x[i]);
         p.v[i] = Vec<dim>::Zero();
         p.C[i] = p.L[i] = Mat<dim>::Zero();
         p.F[i] = Mat<dim>::Identity();
@@ -57,21 +66,35 @@ Particles<dim> randomCloud(const Grid<dim>& g, const RigidBody<dim>& body, int n
     return p;
 }
 
+/// Torque of force f at lever arm r (2D: component 2).
+template <int dim> Vec3 torqueOf(const Vec<dim>& r, const Vec<dim>& f) {
+    if constexpr (dim == 2)
+        return Vec3(0, 0, r[0] * f[1] - r[1] * f[0]);
+    else
+        return r.cross(f);
+}
+
 /// Run the coupling of `body` with a unit linear spring (f = (r_p − φ) n: the force encodes φ)
-/// and compare the points in contact and their forces with a search over all points.
-template <int dim> void expectBruteForce(const std::string& bodyYaml, int n, std::uint64_t seed) {
+/// and compare the points in contact, their forces and the body's force and torque with a
+/// search over all points. `periodic`: the grid's periodic axes; the brute force then takes
+/// every point at its image nearest the body's centre (the minimum image).
+template <int dim>
+void expectBruteForce(const std::string& bodyYaml, int n, std::uint64_t seed,
+                      const std::array<bool, dim>& periodic = {}) {
     SCOPED_TRACE(bodyYaml);
     const Grid<dim> grid = unitGrid<dim>();
+    const PeriodicLattice<dim> lattice(grid, periodic);
+    const PeriodicLattice<dim>* images = lattice.any() ? &lattice : nullptr;
     std::vector<std::unique_ptr<RigidBody<dim>>> bodies;
     bodies.push_back(
         std::make_unique<RigidBody<dim>>(Dictionary::fromString(bodyYaml, "test"), "body"));
     const RigidBody<dim>& body = *bodies[0];
-    Particles<dim> p = randomCloud(grid, body, n, seed);
+    Particles<dim> p = randomCloud(grid, body, n, seed, images);
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws;
     laws.push_back(CouplingLaw<dim>::create(
         Dictionary::fromString("{type: linearSpring, stiffness: 1}", "test"), H));
-    Coupling<dim> coupling(std::move(laws));
+    Coupling<dim> coupling(std::move(laws), images);
     coupling.setParticles(p);
     BlockSort<dim> sort;
     ASSERT_EQ(sort.update(p, grid), -1);
@@ -82,14 +105,22 @@ template <int dim> void expectBruteForce(const std::string& bodyYaml, int n, std
     // Brute force: every point, φ < r_p.
     std::map<Index, Vec<dim>> expected;
     Vec<dim> total = Vec<dim>::Zero();
+    Vec3 torque = Vec3::Zero();
+    Index acrossSeam = 0;
     for (Index i = 0; i < static_cast<Index>(p.size()); ++i) {
         Vec<dim> normal;
-        const double phi = body.distance(p.x[i], normal);
+        const Vec<dim> x = lattice.imageNear(p.x[i], body.position());
+        const double phi = body.distance(x, normal);
         const double rp = Coupling<dim>::radius(p.volume0[i]);
         if (phi < rp) {
             expected[i] = (rp - phi) * normal;
             total -= expected[i];
+            torque += torqueOf<dim>(x - body.position(), -expected[i]);
+            acrossSeam += x != p.x[i];
         }
+    }
+    if (images) {
+        EXPECT_GT(acrossSeam, 20) << "many points should touch the body through the seam";
     }
     ASSERT_GT(expected.size(), 50u) << "the cloud should put many points in contact";
     ASSERT_LT(expected.size(), p.size() / 2) << "and many out of it";
@@ -114,6 +145,7 @@ template <int dim> void expectBruteForce(const std::string& bodyYaml, int n, std
     for (const auto& [i, f] : found)
         EXPECT_TRUE(expected.count(i)) << "point " << i << " is not within r_p";
     EXPECT_LE((body.force() - total).norm(), 1e-9 * (1 + total.norm()));
+    EXPECT_LE((body.torque() - torque).norm(), 1e-9 * (1 + torque.norm()));
 }
 
 /// A torus of radii (ring, tube) about the z axis sampled on a grid of spacing `h`, with its
@@ -186,6 +218,106 @@ TEST(CouplingBroadPhase, LevelSetMatchesBruteForce3D) {
                             "}\ndensity: 1\nposition: [0.1, 0.9, 0.08]\n"
                             "orientation: {axis: [0, 1, 0], angle: 70}\n",
                         40000, 9);
+}
+
+// Periodic faces: a body near a seam meets the points beyond it through its image nearest them
+// (the broad phase searches around every image that reaches the box; each point once).
+TEST(CouplingBroadPhase, PeriodicImagesMatchBruteForce2D) {
+    // Centre just past xMin: points near xMax touch it.
+    expectBruteForce<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\nposition: [0.03, 0.47]\n",
+                        20000, 11, {true, false});
+    // Centre just short of xMax, the other way.
+    expectBruteForce<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\nposition: [0.99, 0.5]\n",
+                        20000, 12, {true, false});
+    // A fixed body far outside the box (fixed bodies are not wrapped): its image at x = 0.7 is
+    // two periods away.
+    expectBruteForce<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\nmotion: fixed\n"
+                        "position: [-1.3, 0.5]\n",
+                        20000, 16, {true, false});
+    // A box in a corner, periodic both ways: four images.
+    expectBruteForce<2>("shape: {type: box, size: [0.4, 0.2]}\ndensity: 1\n"
+                        "position: [0.97, 0.04]\norientation: 33\n",
+                        20000, 13, {true, true});
+}
+
+TEST(CouplingBroadPhase, PeriodicImagesMatchBruteForce3D) {
+    expectBruteForce<3>("shape: {type: sphere, radius: 0.2}\ndensity: 1\n"
+                        "position: [0.97, 0.02, 0.5]\n",
+                        40000, 14, {true, true, true});
+    test::TempDir tmp;
+    const auto file = tmp / "torus.vti";
+    levelset::writeVti(file, torusLevelSet(0.15, 0.05, 0.01));
+    expectBruteForce<3>("shape: {type: levelSet, file: " + file.string() +
+                            "}\ndensity: 1\nposition: [0.1, 0.5, 0.95]\n"
+                            "orientation: {axis: [0, 1, 0], angle: 70}\n",
+                        40000, 15, {true, false, true});
+}
+
+// Half-period invariance: the same body and cloud shifted by L/2 along the periodic axis give
+// the same contacts, forces and torque (to round-off), one of them across the seam.
+TEST(CouplingBroadPhase, PeriodicHalfPeriodShiftGivesTheSameForces) {
+    const Grid<2> grid = unitGrid<2>();
+    const PeriodicLattice<2> lattice(grid, {true, false});
+    auto run = [&](double shift, Vec<2>& force, Vec3& torque, Index& contacts) {
+        std::vector<std::unique_ptr<RigidBody<2>>> bodies;
+        bodies.push_back(std::make_unique<RigidBody<2>>(
+            Dictionary::fromString("shape: {type: box, size: [0.3, 0.1]}\ndensity: 1\n"
+                                   "position: [0.52, 0.4]\norientation: 20\n"
+                                   "angularVelocity: 3\nvelocity: [1, 0]\n",
+                                   "test"),
+            "body"));
+        Particles<2> p = randomCloud(grid, *bodies[0], 20000, 21, &lattice);
+        for (std::size_t i = 0; i < p.size(); ++i)
+            p.x[i] = lattice.wrapPosition(p.x[i] + Vec<2>(shift, 0));
+        bodies[0]->movePositionTo(bodies[0]->position() + Vec<2>(shift, 0));
+        std::vector<std::unique_ptr<CouplingLaw<2>>> laws;
+        laws.push_back(CouplingLaw<2>::create(
+            Dictionary::fromString("{type: barrier, friction: 0.3}", "test"), H));
+        Coupling<2> coupling(std::move(laws), &lattice);
+        coupling.setParticles(p);
+        BlockSort<2> sort;
+        EXPECT_EQ(sort.update(p, grid), -1);
+        coupling.declareState(p, bodies);
+        bodies[0]->clearForces();
+        coupling.computeForces(p, bodies, {340.0}, {0.0}, sort, grid, 1e-4);
+        force = bodies[0]->force();
+        torque = bodies[0]->torque();
+        contacts = coupling.numContacts();
+    };
+    Vec<2> f0, f1;
+    Vec3 t0, t1;
+    Index n0 = 0, n1 = 0;
+    run(0.0, f0, t0, n0);
+    run(0.5, f1, t1, n1); // centre at 1.02: beyond xMax, the box straddles the seam
+    EXPECT_GT(n0, 50);
+    EXPECT_EQ(n0, n1);
+    EXPECT_LE((f1 - f0).norm(), 1e-9 * f0.norm());
+    EXPECT_LE((t1 - t0).norm(), 1e-9 * t0.norm());
+}
+
+TEST(CouplingBroadPhase, PeriodicMovingBodyLargerThanHalfThePeriodIsAnError) {
+    const Grid<2> grid = unitGrid<2>();
+    const PeriodicLattice<2> lattice(grid, {true, false});
+    std::vector<std::unique_ptr<RigidBody<2>>> bodies;
+    bodies.push_back(std::make_unique<RigidBody<2>>(
+        Dictionary::fromString("shape: {type: disk, radius: 0.49}\ndensity: 1\n"
+                               "position: [0.5, 0.5]\n",
+                               "test"),
+        "big"));
+    Particles<2> p = randomCloud(grid, *bodies[0], 200, 3);
+    std::vector<std::unique_ptr<CouplingLaw<2>>> laws;
+    laws.push_back(CouplingLaw<2>::create(Dictionary::fromString("{type: barrier}", "test"), H));
+    Coupling<2> coupling(std::move(laws), &lattice);
+    coupling.setParticles(p);
+    BlockSort<2> sort;
+    ASSERT_EQ(sort.update(p, grid), -1);
+    coupling.declareState(p, bodies);
+    try {
+        coupling.computeForces(p, bodies, {340.0}, {0.0}, sort, grid, 1e-4);
+        ADD_FAILURE() << "no error";
+    } catch (const RunError& e) {
+        EXPECT_NE(std::string(e.what()).find("half the period"), std::string::npos) << e.what();
+    }
 }
 
 } // namespace
