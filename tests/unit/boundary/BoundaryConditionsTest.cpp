@@ -73,6 +73,7 @@ TEST(BoundaryConditions, EveryConditionOnOneNode) {
     const std::vector<NodeCase> cases{
         {"{yMin: noSlip}", Vec<2>(0, 0), m * before / dt},
         {"{yMin: slip}", Vec<2>(1.1, 0), m * (before - Vec<2>(1.1, 0)) / dt},
+        {"{yMin: roller}", Vec<2>(1.1, 0), m * (before - Vec<2>(1.1, 0)) / dt},
         // v_n = 2.9, v_t = 1.1: μ = 0.2 takes 0.58 off v_t, μ = 0.5 all of it.
         {"{yMin: {type: friction, friction: 0.2}}", Vec<2>(1.1 - 0.58, 0),
          m * (before - Vec<2>(0.52, 0)) / dt},
@@ -107,6 +108,23 @@ TEST(BoundaryConditions, EveryConditionOnOneNode) {
         g.vOld[i] = damped;
         s.bc.constrain(g, g.vOld, 0.0);
         EXPECT_NEAR((g.vOld[i] - c.v).norm(), 0, 1e-12);
+    }
+}
+
+TEST(BoundaryConditions, RollerHoldsANodeLeavingTheWallWhereSlipReleasesIt) {
+    // A node on yMin moving away from the wall (v_y > 0) and along it: slip leaves it alone
+    // (the material separates), roller removes the normal part (a symmetry plane).
+    for (const auto& [boundary, expected] :
+         {std::pair<std::string, Vec<2>>{"{yMin: slip}", Vec<2>(0.7, 0.4)},
+          std::pair<std::string, Vec<2>>{"{yMin: roller}", Vec<2>(0.7, 0.0)}}) {
+        SCOPED_TRACE(boundary);
+        Scene<2> s(box2D, "boundary: " + boundary + "\n");
+        clearNodes(s.grid);
+        const Index i = nodeAt(s.grid, Vec<2>(0.0, -0.025));
+        s.grid.mass[i] = 1;
+        s.grid.v[i] = Vec<2>(0.7, 0.4);
+        s.bc.constrain(s.grid, s.grid.v, 0.0);
+        EXPECT_EQ(s.grid.v[i], expected);
     }
 }
 

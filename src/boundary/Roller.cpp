@@ -1,0 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "boundary/Roller.hpp"
+
+namespace mpm {
+
+MPM_REGISTER(BoundaryConditionRegistry<2>, Roller<2>, "roller");
+MPM_REGISTER(BoundaryConditionRegistry<3>, Roller<3>, "roller");
+
+} // namespace mpm
