@@ -88,7 +88,11 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     const std::string limit = stepLimit();
     log() << "Stable deltaT: " << criticalDeltaT() << " s, limit " << limit << "\n";
     time.checkFixedDeltaT(criticalDeltaT(), limit);
-    energyBudget_ = energyBudget(particles_, materials_, bodies_, *acceleration_, gravity_, grid_);
+    std::array<bool, 3> periodic{};
+    for (int d = 0; d < dim; ++d)
+        periodic[d] = bc_.periodic(d);
+    energyBudget_ =
+        energyBudget(particles_, materials_, bodies_, *acceleration_, gravity_, grid_, periodic);
 
     if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
     for (auto& f : functions_)

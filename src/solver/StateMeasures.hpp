@@ -9,6 +9,7 @@
 #include "solver/Reduce.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -49,12 +50,13 @@ template <int dim> Vec<dim> massMoment(const Particles<dim>& p, const BodySet<di
 
 /// The blow-up budget [J]: 10 × what the initial state and the body acceleration can supply
 /// (docs/caseFormat.md §11); unbounded (1e300) when prescribed or driven bodies can do unbounded
-/// work. `g` is the acceleration at the start.
+/// work, or g along a `periodic` axis (its first dim entries; a time-varying g with any
+/// periodic axis). `g` is the acceleration at the start.
 template <int dim>
 double energyBudget(const Particles<dim>& p,
                     const std::vector<std::unique_ptr<Material<dim>>>& materials,
                     const BodySet<dim>& bodies, const BodyAcceleration<dim>& acceleration,
-                    const Vec<dim>& g, const Grid<dim>& grid) {
+                    const Vec<dim>& g, const Grid<dim>& grid, const std::array<bool, 3>& periodic) {
     const Index n = static_cast<Index>(p.size());
     const double kinetic =
         deterministicSum(n, [&](Index i) { return 0.5 * p.mass[i] * p.v[i].squaredNorm(); });
@@ -75,7 +77,11 @@ double energyBudget(const Particles<dim>& p,
             10.0 * (kinetic + strain + bodies.energyBudget(0.0) +
                     acceleration.energySupply(mass + bodyMass, (grid.hi() - grid.lo()).norm()));
     }
-    return budget <= 0 || bodies.driven() ? 1e300 : budget;
+    // Along a periodic axis g can do unbounded work (a flow down a periodic incline): no budget.
+    bool unbounded = bodies.driven();
+    for (int d = 0; d < dim; ++d)
+        unbounded = unbounded || (periodic[d] && (!acceleration.isConstant() || g[d] != 0.0));
+    return budget <= 0 || unbounded ? 1e300 : budget;
 }
 
 /// The debug invariant of the stress update: false when L = 0 on every point while the grid
