@@ -67,7 +67,14 @@ public:
     double defaultK0() const override;
     /// Complementary energy of σᵉ, (p²/(2K) + s:s/(4G)) V [J].
     double strainEnergy(const Particles<dim>& p, Index i) const override;
-    double criticalDensity() const override { return rhoC_; }
+    /// 0: the coupling sends every point's contact force through the grid [000 Eq. 19–20].
+    /// Separation (ρ ≤ ρ_c or p_tr ≤ 0) is a state of this model's stress, reached and left
+    /// every few steps by points at a wall or a body, not a gas with its own contact rule;
+    /// under pure FLIP a force added to a separated point's own velocity is never taken back
+    /// (the silo floor rang up to 48 m/s).
+    double criticalDensity() const override { return 0.0; }
+    /// ρ_c of the separation rule [002 Eq. 46–47] [kg/m³].
+    double separationDensity() const { return rhoC_; }
 
     double bulkViscosity() const { return bulkViscosity_; }
     double shearViscosity() const { return shearViscosity_; }

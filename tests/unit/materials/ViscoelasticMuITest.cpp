@@ -88,13 +88,14 @@ TEST(ViscoelasticMuI, KeysAndDefaults) {
     EXPECT_EQ(as(undamped).bulkViscosity(), 0.0);
     EXPECT_EQ(as(undamped).shearViscosity(), 0.0);
     EXPECT_EQ(as(create<3>("restitution: 1\n")).bulkViscosity(), 0.0);
-    EXPECT_DOUBLE_EQ(undamped->criticalDensity(), 1475.0);
+    EXPECT_DOUBLE_EQ(as(undamped).separationDensity(), 1475.0);
+    EXPECT_EQ(undamped->criticalDensity(), 0.0); // contact forces always through the grid
     EXPECT_NEAR(undamped->defaultK0(), 1.0 - std::sin(21.0 * pi / 180.0), 1e-15);
     const auto direct = create<2>("bulkViscosity: 100\n");
     const ElasticConstants& c = as(direct).elasticConstants();
     EXPECT_DOUBLE_EQ(as(direct).shearViscosity(), c.G / c.K * 100.0);
     EXPECT_EQ(as(create<2>("bulkViscosity: 100\nshearViscosity: 7\n")).shearViscosity(), 7.0);
-    EXPECT_EQ(create<2>("criticalDensity: 1400\n")->criticalDensity(), 1400.0);
+    EXPECT_EQ(as(create<2>("criticalDensity: 1400\n")).separationDensity(), 1400.0);
 }
 
 TEST(ViscoelasticMuI, BadInputIsAnErrorAtTheKey) {
