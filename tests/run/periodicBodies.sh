@@ -16,20 +16,7 @@
 #     restarts from A's and B's own t = 0.1 (A after its disk wrapped, B before) bit-identical
 #     to the uninterrupted runs (particles.vtu and uniform/rigidBodies).
 set -euo pipefail
-root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
-solver=$root/bin/mpmFoam
-py=${MPMFOAM_PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail=0
-
-run() { # case threads
-    local dir=$1 threads=$2
-    OMP_NUM_THREADS=$threads "$solver" -case "$dir" >>"$dir/log.mpmFoam" 2>&1 ||
-        { echo "FAIL: mpmFoam failed on $dir"; tail -20 "$dir/log.mpmFoam"; exit 1; }
-}
-copy() { rm -rf "$2" && cp -r "$root/tests/cases/$1" "$2"; }
-writes() { find "$1" -mindepth 1 -maxdepth 1 -type d -name '[0-9]*' -printf '%f\n' | sort -g; }
+. "$(dirname "$0")/../tools/scriptTest.sh"
 same() { # label dirA dirB times...: particles.vtu and uniform/rigidBodies bit-identical
     local label=$1 a=$2 b=$3 n=0 bad=""
     shift 3

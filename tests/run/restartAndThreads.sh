@@ -8,12 +8,7 @@
 #     final particles.vtu;
 #  3. ParaView's readers (VTK's XML readers) load particles.pvd and every time directory.
 set -euo pipefail
-root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
-solver=$root/bin/mpmFoam
-py=${MPMFOAM_PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail=0
+. "$(dirname "$0")/../tools/scriptTest.sh"
 
 run() { # case threads [extra args]
     local dir=$1 threads=$2
