@@ -17,10 +17,11 @@
 //    one for NoFlow, its return map for a flow functor.
 //  - Plasticity (an object read from the dictionary): NoPlasticity, DruckerPragerPlasticity
 //    (DruckerPrager.hpp), MuIPlasticity (MuI.hpp). It gives the per-step flow functor
-//    (FlowRules.hpp), the tension cut-off and its K0. A new flow rule (e.g. a viscoelastic μ(I))
-//    is a new Plasticity class with the members of NoPlasticity and a flow functor with
-//    `beta`, `yield` and `multiplier` that the laws' return maps accept, registered with
-//    createElastoPlastic like MuI.cpp.
+//    (FlowRules.hpp), the tension cut-off and its K0. A new flow rule is a new Plasticity
+//    class with the members of NoPlasticity and a flow functor with `beta`, `yield` and
+//    `multiplier` that the laws' return maps accept, registered with createElastoPlastic like
+//    MuI.cpp. (The viscoelastic μ(I) of [002] carries σᵉ beside σ and a viscous trial: it is
+//    its own Material, ViscoelasticMuI.hpp.)
 //  - Options: the trans-phase relation [000 Eq. 10] (transPhase, criticalDensity) of plastic
 //    materials, passed to the kernels as ρ_c (0: off).
 // ElastoPlastic<dim, Law, Plasticity> is instantiated per combination; the `type:` factory
