@@ -5,12 +5,7 @@
 # an unstable fixed deltaT (allowed on purpose) stops with exit 1 naming step, phase and
 # particle, after writing the last good state, and never writes NaN.
 set -euo pipefail
-root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
-solver=$root/bin/mpmFoam
-py=${MPMFOAM_PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail=0
+. "$(dirname "$0")/../tools/scriptTest.sh"
 ok() { echo "ok: $*"; }
 bad() { echo "FAIL: $*"; fail=1; }
 
