@@ -54,6 +54,12 @@ public:
                                      const Vec<dim>& gravity, double t, double dt,
                                      std::vector<char>& touched) const = 0;
 
+    /// The condition releases a node whose updated velocity leaves the wall (slip, friction).
+    /// Its P2G velocity is then not constrained by the rule but by the contact the last grid
+    /// update found (BoundaryConditions::constrain): deciding contact twice per step, once on
+    /// each velocity, lets the strain and the motion see different walls and pumps energy into
+    /// pure FLIP under USF and MUSL.
+    virtual bool unilateral() const { return false; }
     /// Material may leave through the patch (particles beyond it are removed).
     virtual bool open() const { return false; }
     /// The face is one side of a periodic pair (no constraint; the lattice is folded instead).

@@ -61,6 +61,16 @@ BoundaryConditions<dim>::BoundaryConditions(const Dictionary& gridDict, const Gr
     for (int f = 0; f < NumFaces; ++f)
         if (!faces_[f].periodic) assignNodes(faceDicts[f] ? &*faceDicts[f] : nullptr, f);
     touched_.assign(grid.numNodes(), 0);
+    contact_.assign(grid.numNodes(), 0);
+    for (const Face& face : faces_)
+        for (const Patch& p : face.patches)
+            hasUnilateral_ = hasUnilateral_ || p.condition->unilateral();
+    // An inactive patch hands its nodes to the face's box-less patch or to slip.
+    for (const Face& face : faces_)
+        for (const Patch& p : face.patches)
+            if (!face.periodic && (p.from > -std::numeric_limits<double>::infinity() ||
+                                   p.until < std::numeric_limits<double>::infinity()))
+                hasUnilateral_ = true;
 }
 
 template <int dim>
@@ -249,8 +259,31 @@ void BoundaryConditions<dim>::constrain(const Grid<dim>& g, std::vector<Vec<dim>
         const FaceNormal normal{f / 2, f % 2 == 0 ? -1.0 : 1.0};
         for (std::size_t k = 0; k < face.patches.size(); ++k) {
             const Patch& p = face.patches[k];
-            governing(face, k, t).constrain({&p.nodes, p.owners}, normal, g.mass, v, t);
+            const BoundaryCondition<dim>& condition = governing(face, k, t);
+            if (!condition.unilateral()) {
+                condition.constrain({&p.nodes, p.owners}, normal, g.mass, v, t);
+                continue;
+            }
+            const unsigned bit = 1u << normal.axis;
+            for (Index i : p.nodes)
+                if (g.mass[i] != 0 && (contact_[i] & bit)) v[i][normal.axis] = 0;
         }
+    }
+}
+
+template <int dim> std::vector<std::pair<Index, int>> BoundaryConditions<dim>::wallContact() const {
+    std::vector<std::pair<Index, int>> contact;
+    for (Index i = 0; i < static_cast<Index>(contact_.size()); ++i)
+        if (contact_[i]) contact.emplace_back(i, contact_[i]);
+    return contact;
+}
+
+template <int dim>
+void BoundaryConditions<dim>::setWallContact(const std::vector<std::pair<Index, int>>& contact) {
+    std::fill(contact_.begin(), contact_.end(), 0);
+    for (const auto& [node, axes] : contact) {
+        MPM_ASSERT(node >= 0 && node < static_cast<Index>(contact_.size()));
+        contact_[node] = static_cast<unsigned char>(axes);
     }
 }
 
@@ -269,9 +302,18 @@ void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& grav
             const FaceNormal normal{f / 2, f % 2 == 0 ? -1.0 : 1.0};
             for (std::size_t k = 0; k < face.patches.size(); ++k) {
                 Patch& p = face.patches[k];
-                p.reaction = governing(face, k, t)
-                                 .constrainUpdate({&p.nodes, p.owners}, normal, state, g.v, gravity,
-                                                  t, dt, touched_);
+                const BoundaryCondition<dim>& condition = governing(face, k, t);
+                // Contact as the rule will find it: the updated velocity enters the wall.
+                const unsigned bit = 1u << normal.axis;
+                const bool unilateral = condition.unilateral();
+                for (Index i : p.nodes) {
+                    const bool pressed =
+                        unilateral && g.mass[i] != 0 && normal.sign * g.v[i][normal.axis] > 0;
+                    contact_[i] = static_cast<unsigned char>(pressed ? contact_[i] | bit
+                                                                     : contact_[i] & ~bit);
+                }
+                p.reaction = condition.constrainUpdate({&p.nodes, p.owners}, normal, state, g.v,
+                                                       gravity, t, dt, touched_);
                 reaction += p.reaction;
             }
         }

@@ -40,7 +40,11 @@ public:
     /// Reads `gridDict`'s optional `boundary` map (every face slip without it) and checks it.
     BoundaryConditions(const Dictionary& gridDict, const Grid<dim>& grid);
 
-    /// Constrain the P2G velocity v (g.vOld) at time t (the start of the step, tⁿ).
+    /// Constrain the P2G velocity v (g.vOld) at time t (the start of the step, tⁿ). On a
+    /// unilateral patch (slip, friction) the normal velocity is zeroed where the last
+    /// constrainUpdate found the node pressed against the wall, and left free elsewhere: the
+    /// velocity gradient then sees the wall the motion saw (this step's under MUSL, the last
+    /// step's under USF), never a second decision of its own.
     void constrain(const Grid<dim>& g, std::vector<Vec<dim>>& v, double t) const;
     /// Constrain the updated velocity g.v at time t (the end of the step, tⁿ⁺¹) and store each
     /// face's reaction, F_f = Σ m_i (v_i⁻ − v_i⁺)/Δt over its owner nodes [N] (per metre in
@@ -49,6 +53,14 @@ public:
     /// v⁰ + Δt (f/m + g), later ones from what is left. `gravity` g [m/s²].
     void constrainUpdate(Grid<dim>& g, const Vec<dim>& gravity, double t, double dt,
                          Reactions& reactions);
+
+    /// Some face has a unilateral condition (at some time): wall contact is state.
+    bool hasUnilateral() const { return hasUnilateral_; }
+    /// Wall contact of the last constrainUpdate, as (node, axis bits) pairs in node order
+    /// (bit a: pressed against a wall normal to axis a): restart state under USF.
+    std::vector<std::pair<Index, int>> wallContact() const;
+    /// Restore wallContact() (nodes checked by the caller: 0 ≤ node < numNodes).
+    void setWallContact(const std::vector<std::pair<Index, int>>& contact);
 
     /// Remove the particles more than one cell beyond an open patch active at time t,
     /// keeping the order of the others; returns how many left. Throws RunError if none is
@@ -125,7 +137,9 @@ private:
     std::unique_ptr<BoundaryCondition<dim>> slip_;  ///< fallback
     std::unique_ptr<PeriodicLattice<dim>> lattice_; ///< built once the faces are read
     bool hasOpen_ = false;
+    bool hasUnilateral_ = false;
     std::vector<char> touched_;
+    std::vector<unsigned char> contact_; ///< per node: bit a = pressed against an axis-a wall
 };
 
 } // namespace mpm

@@ -13,6 +13,7 @@ template <int dim> class Friction final : public NodeRuleCondition<dim, Friction
 public:
     explicit Friction(const Dictionary& dict)
         : mu_(dict.getScalar("friction", Bounds::nonNegative())) {}
+    bool unilateral() const override { return true; }
     auto rule(const FaceNormal& n, double) const {
         return [n, mu = mu_](Vec<dim>& v) {
             const double vn = n.sign * v[n.axis];

@@ -11,6 +11,7 @@ namespace mpm {
 template <int dim> class Slip final : public NodeRuleCondition<dim, Slip<dim>> {
 public:
     explicit Slip(const Dictionary&) {}
+    bool unilateral() const override { return true; }
     auto rule(const FaceNormal& n, double) const {
         return [n](Vec<dim>& v) {
             if (n.sign * v[n.axis] > 0) v[n.axis] = 0;

@@ -226,6 +226,17 @@ void writeScalarFile(const std::filesystem::path& file, const std::string& key, 
     writeTextAtomic(file, os.str());
 }
 
+void writeIndexFlags(const std::filesystem::path& file, const std::string& key,
+                     const std::vector<std::pair<Index, int>>& pairs) {
+    std::ostringstream index, flags;
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        index << (k ? ", " : "") << pairs[k].first;
+        flags << (k ? ", " : "") << pairs[k].second;
+    }
+    std::filesystem::create_directories(file.parent_path());
+    writeTextAtomic(file, key + ": [" + index.str() + "]\nflags: [" + flags.str() + "]\n");
+}
+
 void writeTextAtomic(const std::filesystem::path& file, const std::string& text) {
     const std::filesystem::path tmp = tmpName(file);
     {

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/Types.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm::io {
@@ -45,5 +48,10 @@ void writeTextAtomic(const std::filesystem::path& file, const std::string& text)
 /// Write `key: value` (17 significant digits, read back exactly) to `file` atomically, creating
 /// its folder: a number of the restart state such as `<time>/uniform/accelerationWork`.
 void writeScalarFile(const std::filesystem::path& file, const std::string& key, double value);
+
+/// Write a list of (index, flags) pairs as `key: [i, …]` and `flags: [f, …]` to `file`
+/// atomically, creating its folder (restart state such as `<time>/uniform/wallContact`).
+void writeIndexFlags(const std::filesystem::path& file, const std::string& key,
+                     const std::vector<std::pair<Index, int>>& pairs);
 
 } // namespace mpm::io

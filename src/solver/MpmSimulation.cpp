@@ -75,6 +75,13 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         gravity_ = acceleration_->at(time.value());
         if (!acceleration_->isConstant())
             accelerationWork_ = case_.read(from + "/uniform/accelerationWork").getScalar("work");
+        if (wallContactIsState()) {
+            const std::string file = from + "/uniform/wallContact";
+            if (case_.exists(file))
+                readWallContact(file);
+            else
+                log() << "No " << file << ": the walls start released, as in a fresh run\n";
+        }
         log() << "Restart from time " << from << " (" << particles_.size() << " particles)\n";
     }
     buildMaterialLists();
@@ -364,6 +371,28 @@ template <int dim> void MpmSimulation<dim>::checkBodies() {
 // ---------------------------------------------------------------------------------------------
 // Output and failure
 
+template <int dim> bool MpmSimulation<dim>::wallContactIsState() const {
+    return bc_.hasUnilateral() && order_->gradientBeforeUpdate();
+}
+
+template <int dim> void MpmSimulation<dim>::readWallContact(const std::string& file) {
+    const Dictionary d = case_.read(file);
+    const std::vector<double> nodes = d.getVector("nodes");
+    const std::vector<double> flags = d.getVector("flags", static_cast<int>(nodes.size()));
+    d.checkUnknownKeys();
+    std::vector<std::pair<Index, int>> contact;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const bool node = nodes[k] >= 0 && nodes[k] < static_cast<double>(grid_.numNodes()) &&
+                          nodes[k] == std::floor(nodes[k]);
+        if (!node) d.error("nodes", "entry " + std::to_string(k) + " is not a node of the grid");
+        if (!(flags[k] >= 1 && flags[k] < (1 << dim) && flags[k] == std::floor(flags[k])))
+            d.error("flags", "entry " + std::to_string(k) + " is not an axis bit set (1 to " +
+                                 std::to_string((1 << dim) - 1) + ")");
+        contact.emplace_back(static_cast<Index>(nodes[k]), static_cast<int>(flags[k]));
+    }
+    bc_.setWallContact(contact);
+}
+
 template <int dim> void MpmSimulation<dim>::executeFunctions() {
     auto timer = timer_(PhaseTimer::Functions);
     for (auto& f : functions_)
@@ -383,6 +412,8 @@ template <int dim> void MpmSimulation<dim>::write() {
                 io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
                                     accelerationWork_);
             if (!bodies_.empty()) bodies_.write(dir);
+            if (wallContactIsState())
+                io::writeIndexFlags(dir / "uniform" / "wallContact", "nodes", bc_.wallContact());
         },
         files);
 }

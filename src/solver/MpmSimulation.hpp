@@ -71,6 +71,10 @@ private:
     double criticalDeltaT() const;
     /// The limit that governs criticalDeltaT, with its formula and values (log and errors).
     std::string stepLimit() const;
+    /// Under USF with a unilateral wall the last update's wall contact is restart state
+    /// (`<time>/uniform/wallContact`, BoundaryConditions::constrain).
+    bool wallContactIsState() const;
+    void readWallContact(const std::string& file);
 
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }

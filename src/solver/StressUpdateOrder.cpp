@@ -16,6 +16,7 @@ class UpdateStressFirst final : public StressUpdateOrder {
 public:
     bool forceWithMomentum() const override { return false; }
     bool gradientInGridToParticle() const override { return false; }
+    bool gradientBeforeUpdate() const override { return true; }
     void afterParticleToGrid(StressPhases& s, double dt) const override {
         s.gridVelocityFromMomentum();
         s.velocityGradient();

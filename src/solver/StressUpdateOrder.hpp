@@ -40,6 +40,9 @@ public:
     virtual bool forceWithMomentum() const = 0;
     /// G2P computes L from the updated grid velocity.
     virtual bool gradientInGridToParticle() const = 0;
+    /// L is taken before this step's grid update, so it sees the wall contact of the last one
+    /// (BoundaryConditions::constrain): that contact is restart state.
+    virtual bool gradientBeforeUpdate() const { return false; }
     /// What follows P2G before the grid update.
     virtual void afterParticleToGrid(StressPhases&, double /*dt*/) const {}
     /// What follows G2P.

@@ -4,7 +4,8 @@
 #     function-object output;
 #  2. a run 0 → T and a run 0 → T/2 resumed to T (startFrom latestTime) give a bit-identical
 #     (bodyContact2D: with body–body contact history in uniform/bodyContacts at T/2;
-#     viscoelastic2D: with the stored elastic stress σᵉ of flowing points at T/2)
+#     viscoelastic2D: with the stored elastic stress σᵉ of flowing points at T/2;
+#     slipWalls2D: with the USF wall contact of the last grid update in uniform/wallContact)
 #     final particles.vtu;
 #  3. ParaView's readers (VTK's XML readers) load particles.pvd and every time directory.
 set -euo pipefail
@@ -17,7 +18,7 @@ run() { # case threads [extra args]
         { echo "FAIL: mpmFoam failed on $dir"; cat "$dir/log.mpmFoam.$threads"; exit 1; }
 }
 
-for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D viscoelastic2D; do
+for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D viscoelastic2D slipWalls2D; do
     src=$root/tests/cases/$c
     for t in 1 2; do
         rm -rf "$work/$c.$t" && cp -r "$src" "$work/$c.$t"
@@ -53,6 +54,9 @@ for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D visco
     grep -q "Restart from time" "$half/log.mpmFoam.2" || { echo "FAIL: $c: second run did not restart"; fail=1; }
     if [[ -f $src/constant/bodyContact ]] && ! grep -q '\[\[' "$half/$mid/uniform/bodyContacts"; then
         echo "FAIL: $c: no body contact history at the restart time $mid (the test would prove nothing)"; fail=1
+    fi
+    if [[ $c == slipWalls2D ]] && ! grep -q '^nodes: \[[0-9]' "$half/$mid/uniform/wallContact"; then
+        echo "FAIL: $c: no wall contact stored at the restart time $mid (the test would prove nothing)"; fail=1
     fi
     if [[ $c == viscoelastic2D ]]; then # the restart must carry a non-zero stored σᵉ
         "$py" - "$half/$mid/particles.vtu" <<'PY' || { echo "FAIL: $c: no flowing point with a stored elastic stress at $mid (the test would prove nothing)"; fail=1; }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -63,6 +64,9 @@ struct NodeCase {
     std::string boundary;
     Vec<2> v;        ///< expected velocity after the condition
     Vec<2> reaction; ///< expected reaction of face yMin
+    /// Expected P2G velocity if not v: slip and friction only zero the normal velocity of a
+    /// node the update pressed against the wall (here (1.1, −2.9) → (1.1, 0)).
+    std::optional<Vec<2>> p2g = std::nullopt;
 };
 
 /// One loaded node in the middle of yMin (m = 2 kg, v⁰ = (1, −2), f = (4, 0), g = (0, −10),
@@ -76,8 +80,8 @@ TEST(BoundaryConditions, EveryConditionOnOneNode) {
         {"{yMin: roller}", Vec<2>(1.1, 0), m * (before - Vec<2>(1.1, 0)) / dt},
         // v_n = 2.9, v_t = 1.1: μ = 0.2 takes 0.58 off v_t, μ = 0.5 all of it.
         {"{yMin: {type: friction, friction: 0.2}}", Vec<2>(1.1 - 0.58, 0),
-         m * (before - Vec<2>(0.52, 0)) / dt},
-        {"{yMin: {type: friction, friction: 0.5}}", Vec<2>(0, 0), m * before / dt},
+         m * (before - Vec<2>(0.52, 0)) / dt, Vec<2>(1.1, 0)},
+        {"{yMin: {type: friction, friction: 0.5}}", Vec<2>(0, 0), m * before / dt, Vec<2>(1.1, 0)},
         {"{yMin: open}", damped, Vec<2>(0, 0)},
         {"{yMin: {type: velocity, value: [0.5, 0.2]}}", Vec<2>(0.5, 0.2),
          m * (before - Vec<2>(0.5, 0.2)) / dt},
@@ -104,10 +108,37 @@ TEST(BoundaryConditions, EveryConditionOnOneNode) {
         EXPECT_NEAR((r[2] - c.reaction).norm(), 0, 1e-9) << r[2].transpose();
         for (int f : {0, 1, 3})
             EXPECT_EQ(r[f], Vec<2>::Zero()) << Grid<2>::faceName(f);
-        // The P2G velocity: the same rule, no reaction.
+        // The P2G velocity: the same rule (unilateral walls: the contact just found), no reaction.
         g.vOld[i] = damped;
         s.bc.constrain(g, g.vOld, 0.0);
-        EXPECT_NEAR((g.vOld[i] - c.v).norm(), 0, 1e-12);
+        EXPECT_NEAR((g.vOld[i] - c.p2g.value_or(c.v)).norm(), 0, 1e-12);
+    }
+}
+
+TEST(BoundaryConditions, UnilateralP2GVelocityFollowsTheContactOfTheLastUpdate) {
+    // A node on yMin whose P2G velocity enters the wall: slip and friction zero its normal part
+    // only if the last update pressed it against the wall, and never touch the tangential part;
+    // roller and noSlip apply their rule whatever the history.
+    for (const std::string boundary :
+         {"{yMin: slip}", "{yMin: {type: friction, friction: 0.4}}", "{yMin: roller}"}) {
+        SCOPED_TRACE(boundary);
+        const bool unilateral = boundary != "{yMin: roller}";
+        Scene<2> s(box2D, "boundary: " + boundary + "\n");
+        Grid<2>& g = s.grid;
+        clearNodes(g);
+        const Index i = nodeAt(g, Vec<2>(0.0, -0.025));
+        g.mass[i] = 1;
+        BoundaryConditions<2>::Reactions r;
+        const Vec<2> entering(0.7, -0.4), leaving(0.7, 0.4);
+        for (const Vec<2>& updated : {leaving, entering, leaving}) {
+            g.v[i] = updated; // the update: contact where it enters the wall
+            s.bc.constrainUpdate(g, Vec<2>::Zero(), 0.0, 1e-3, r);
+            g.vOld[i] = entering; // the next P2G velocity enters the wall
+            s.bc.constrain(g, g.vOld, 0.0);
+            const bool pressed = updated == entering;
+            EXPECT_EQ(g.vOld[i], unilateral && !pressed ? entering : Vec<2>(0.7, 0.0))
+                << "after an update " << (pressed ? "into" : "away from") << " the wall";
+        }
     }
 }
 
@@ -188,10 +219,14 @@ struct FaceCondition {
 };
 using Kind = FaceCondition::Kind;
 
-/// The solver's former applyBoundaryConditions on the former face conditions, verbatim.
+/// The solver's former applyBoundaryConditions on the former face conditions, verbatim but for
+/// one change since: on the P2G velocity (recordReactions false) slip and friction zero the
+/// normal velocity of the nodes the last update pushed out of the wall (`contact`, bit = axis),
+/// instead of applying their rule again.
 template <int dim>
 void legacyApply(Grid<dim>& grid, const std::vector<FaceCondition>& faces, bool recordReactions,
-                 double dt, const Vec<dim>& gravity, std::array<Vec<dim>, 2 * dim>& reactions) {
+                 double dt, const Vec<dim>& gravity, std::array<Vec<dim>, 2 * dim>& reactions,
+                 std::vector<unsigned char>& contact) {
     std::vector<Vec<dim>>& vel = recordReactions ? grid.v : grid.vOld;
     std::vector<char> touched(grid.numNodes(), 0);
     for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
@@ -210,6 +245,17 @@ void legacyApply(Grid<dim>& grid, const std::vector<FaceCondition>& faces, bool 
                     touched[i] = 1;
                 }
                 const double vn = sign * v[axis];
+                const bool unilateral = fc.kind != FaceCondition::Kind::NoSlip;
+                if (unilateral && !recordReactions) {
+                    if (contact[i] & (1u << axis)) v[axis] = 0;
+                    continue;
+                }
+                if (unilateral) {
+                    if (vn > 0)
+                        contact[i] |= 1u << axis;
+                    else
+                        contact[i] &= ~(1u << axis);
+                }
                 switch (fc.kind) {
                 case FaceCondition::Kind::NoSlip:
                     v.setZero();
@@ -252,18 +298,19 @@ template <int dim>
 void checkLegacy(const std::string& text, const std::vector<FaceCondition>& faces) {
     SCOPED_TRACE(text);
     Grid<dim> a(parse(text)), b(parse(text));
-    const BoundaryConditions<dim> bcConst(parse(text), a);
     BoundaryConditions<dim> bc(parse(text), a);
+    const BoundaryConditions<dim>& bcConst = bc;
+    std::vector<unsigned char> contact(a.numNodes(), 0);
     Vec<dim> gravity = Vec<dim>::Zero();
     gravity[dim - 1] = -9.81;
     for (unsigned seed : {1u, 2u}) {
         randomNodes(a, seed);
         randomNodes(b, seed);
         std::array<Vec<dim>, 2 * dim> ra, rb;
-        legacyApply(a, faces, false, 0.0, gravity, ra);
-        bcConst.constrain(b, b.vOld, 0.3);
-        legacyApply(a, faces, true, 1e-3, gravity, ra);
+        legacyApply(a, faces, true, 1e-3, gravity, ra, contact);
         bc.constrainUpdate(b, gravity, 0.3, 1e-3, rb);
+        legacyApply(a, faces, false, 0.0, gravity, ra, contact);
+        bcConst.constrain(b, b.vOld, 0.3);
         for (Index k = 0; k < a.numNodes(); ++k) {
             ASSERT_EQ(a.vOld[k], b.vOld[k]) << k;
             ASSERT_EQ(a.v[k], b.v[k]) << k;
