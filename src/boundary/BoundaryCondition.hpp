@@ -60,6 +60,10 @@ public:
     /// each velocity, lets the strain and the motion see different walls and pumps energy into
     /// pure FLIP under USF and MUSL.
     virtual bool unilateral() const { return false; }
+    /// For a unilateral condition, the wall's velocity along the face axis at time t, w·e_axis
+    /// [m/s]: a node pressed against the wall takes it as its normal velocity (0 for a fixed
+    /// wall).
+    virtual double wallNormalVelocity(const FaceNormal& /*n*/, double /*t*/) const { return 0.0; }
     /// Material may leave through the patch (particles beyond it are removed).
     virtual bool open() const { return false; }
     /// The face is one side of a periodic pair (no constraint; the lattice is folded instead).

@@ -265,8 +265,9 @@ void BoundaryConditions<dim>::constrain(const Grid<dim>& g, std::vector<Vec<dim>
                 continue;
             }
             const unsigned bit = 1u << normal.axis;
+            const double wn = condition.wallNormalVelocity(normal, t);
             for (Index i : p.nodes)
-                if (g.mass[i] != 0 && (contact_[i] & bit)) v[i][normal.axis] = 0;
+                if (g.mass[i] != 0 && (contact_[i] & bit)) v[i][normal.axis] = wn;
         }
     }
 }
@@ -306,9 +307,10 @@ void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& grav
                 // Contact as the rule will find it: the updated velocity enters the wall.
                 const unsigned bit = 1u << normal.axis;
                 const bool unilateral = condition.unilateral();
+                const double wn = unilateral ? condition.wallNormalVelocity(normal, t) : 0.0;
                 for (Index i : p.nodes) {
-                    const bool pressed =
-                        unilateral && g.mass[i] != 0 && normal.sign * g.v[i][normal.axis] > 0;
+                    const bool pressed = unilateral && g.mass[i] != 0 &&
+                                         normal.sign * (g.v[i][normal.axis] - wn) > 0;
                     contact_[i] = static_cast<unsigned char>(pressed ? contact_[i] | bit
                                                                      : contact_[i] & ~bit);
                 }

@@ -41,8 +41,9 @@ public:
     BoundaryConditions(const Dictionary& gridDict, const Grid<dim>& grid);
 
     /// Constrain the P2G velocity v (g.vOld) at time t (the start of the step, tⁿ). On a
-    /// unilateral patch (slip, friction) the normal velocity is zeroed where the last
-    /// constrainUpdate found the node pressed against the wall, and left free elsewhere: the
+    /// unilateral patch (slip, friction, smooth velocity) the normal velocity is set to the
+    /// wall's where the last constrainUpdate found the node pressed against the wall, and left
+    /// free elsewhere: the
     /// velocity gradient then sees the wall the motion saw (this step's under MUSL, the last
     /// step's under USF), never a second decision of its own.
     void constrain(const Grid<dim>& g, std::vector<Vec<dim>>& v, double t) const;

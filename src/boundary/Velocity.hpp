@@ -24,6 +24,11 @@ public:
 
     /// w(t) [m/s].
     Vec<dim> wallVelocity(double t) const;
+    /// The smooth wall (`slip: yes`) releases nodes that leave it.
+    bool unilateral() const override { return slip_; }
+    double wallNormalVelocity(const FaceNormal& n, double t) const override {
+        return wallVelocity(t)[n.axis];
+    }
 
     auto rule(const FaceNormal& n, double t) const {
         const Vec<dim> w = wallVelocity(t);
