@@ -109,7 +109,7 @@ public:
             if (zeta_ > 0) fn -= 2.0 * zeta_ * std::sqrt(kn_ * reducedMass(p, t)) * vn;
             fn = std::max(fn, 0.0); // no attraction
             Vec<dim> xi = Vec<dim>::Zero();
-            const auto key = std::array<int, 3>{c.prober, c.target, c.probe};
+            const auto key = std::array<int, 4>{c.prober, c.target, c.probe, 0};
             if (const auto it = history.find(key); it != history.end()) xi = it->second;
             xi -= xi.dot(c.normal) * c.normal;
             xi += dt * (vRel - vn * c.normal);

@@ -13,9 +13,10 @@
 
 namespace mpm {
 
-/// Tangential spring displacement of every touching (prober body, target body, probe) triple
-/// [m] — the history a frictional contact keeps between steps and across a restart.
-template <int dim> using ContactHistory = std::map<std::array<int, 3>, Vec<dim>>;
+/// Tangential spring displacement of every touching contact [m] — the history a frictional
+/// contact keeps between steps and across a restart. Key: linearSpring (prober body, target
+/// body, probe, 0); sdem (vertex body, edge body, vertex, edge).
+template <int dim> using ContactHistory = std::map<std::array<int, 4>, Vec<dim>>;
 
 /// Contact between rigid bodies (constant/bodyContact, `type:`): the body–body phase of the step,
 /// which seed 001's spheropolygon DEM fills with its own geometry.
@@ -46,7 +47,7 @@ public:
         periodic_ = lattice.any() ? &lattice : nullptr;
     }
 
-    /// Build the law named by `type:` (linearSpring).
+    /// Build the law named by `type:` (linearSpring, sdem).
     static std::unique_ptr<BodyContactLaw> create(const Dictionary& dict);
 
 protected:

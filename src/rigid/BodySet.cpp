@@ -163,7 +163,7 @@ template <int dim> std::string BodySet<dim>::historyText() const {
     os << "contacts: [";
     const char* sep = "";
     for (const auto& [key, xi] : history_) {
-        os << sep << "[" << key[0] << ", " << key[1] << ", " << key[2];
+        os << sep << "[" << key[0] << ", " << key[1] << ", " << key[2] << ", " << key[3];
         for (int d = 0; d < dim; ++d)
             os << ", " << xi[d];
         os << "]";
@@ -176,16 +176,23 @@ template <int dim> std::string BodySet<dim>::historyText() const {
 template <int dim> void BodySet<dim>::readHistory(const Dictionary& dict) {
     history_.clear();
     const int n = static_cast<int>(bodies_.size());
-    for (const auto& row : dict.vectorList("contacts", 3 + dim)) {
-        std::array<int, 3> key{};
-        for (int k = 0; k < 3; ++k) {
+    // Rows [body, body, k, l, ξ…] (4 + dim numbers); files written before the key had a fourth
+    // index hold [body, body, k, ξ…] (3 + dim), read with l = 0.
+    for (const auto& row : dict.vectorList("contacts")) {
+        const int nKey = static_cast<int>(row.size()) - dim;
+        if (nKey != 3 && nKey != 4)
+            dict.error("contacts", "expected rows [body, body, k, l, " +
+                                       std::string(dim == 2 ? "ξx, ξy" : "ξx, ξy, ξz") +
+                                       "] (or [body, body, k, ξ…] of older files)");
+        std::array<int, 4> key{};
+        for (int k = 0; k < nKey; ++k) {
             key[k] = static_cast<int>(row[k]);
             if (key[k] != row[k] || key[k] < 0 || (k < 2 && key[k] >= n))
                 dict.error("contacts", "a contact names a body or probe that does not exist");
         }
         Vec<dim> xi;
         for (int d = 0; d < dim; ++d)
-            xi[d] = row[3 + d];
+            xi[d] = row[nKey + d];
         history_[key] = xi;
     }
     dict.checkUnknownKeys();

@@ -21,9 +21,20 @@ template <int dim> BoxShape<dim>::BoxShape(const Dictionary& dict) {
         h_[d] = hasHalf ? v[d] : 0.5 * v[d];
     }
     dict.checkUnknownKeys();
+    setCorners();
 }
 
-template <int dim> BoxShape<dim>::BoxShape(const Vec<dim>& halfExtents) : h_(halfExtents) {}
+template <int dim> BoxShape<dim>::BoxShape(const Vec<dim>& halfExtents) : h_(halfExtents) {
+    setCorners();
+}
+
+template <int dim> void BoxShape<dim>::setCorners() {
+    if constexpr (dim == 2) {
+        const double a = h_[0];
+        const double b = h_[1];
+        sp_.vertices = {Vec<2>(-a, -b), Vec<2>(a, -b), Vec<2>(a, b), Vec<2>(-a, b)};
+    }
+}
 
 template <int dim> double BoxShape<dim>::distance(const Vec<dim>& x, Vec<dim>& normal) const {
     const Vec<dim> q = x.cwiseAbs() - h_;

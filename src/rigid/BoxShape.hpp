@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rigid/Shape.hpp"
+#include "rigid/SpheroPolygon.hpp"
 
 namespace mpm {
 
@@ -25,9 +26,14 @@ public:
     double boundingRadius() const override { return h_.norm(); }
     /// 3D: 8 corners, 12 triangles with outward normals; 2D: 4 corners, 4 segments.
     void surface(std::vector<Vec3>& points, std::vector<std::vector<int>>& cells) const override;
+    /// 2D: the 4 corners counter-clockwise with a = 0 (SDEM contact); 3D: none.
+    const SpheroPolygon* spheroPolygon() const override { return dim == 2 ? &sp_ : nullptr; }
 
 private:
     Vec<dim> h_ = Vec<dim>::Zero();
+    SpheroPolygon sp_; ///< 2D only
+
+    void setCorners();
 };
 
 } // namespace mpm

@@ -38,9 +38,9 @@ public:
     /// {type: driven, angularVelocity: ω} or {type: driven, table: [[t, ω…], …]} (rotation
     /// prescribed, translation free). The top-level velocity is v^{-½} of a free or driven body,
     /// angularVelocity ω^{-½} of a free body; otherwise they are errors. Exactly one of
-    /// density, mass (> 0) for every motion. A levelSet body may omit position: it then sits
-    /// where its mesh was (shape().meshPose()), and orientation is applied on top of the
-    /// mesh's own orientation.
+    /// density, mass (> 0) for every motion. A levelSet or spheropolygon body may omit
+    /// position: it then sits where its mesh (its vertices) put it (shape().meshPose()), and
+    /// orientation is applied on top of the mesh's own orientation.
     RigidBody(const Dictionary& dict, std::string name);
 
     const std::string& name() const { return name_; }

@@ -11,6 +11,8 @@
 
 namespace mpm {
 
+struct SpheroPolygon;
+
 /// Geometry of a rigid body in its own frame: origin at the centroid, axes along the
 /// principal axes of inertia (DESIGN §5, [004 §4.2]). The coupling asks only for the signed
 /// distance and normal, so a level-set grid (next issue) is one more Shape.
@@ -48,6 +50,10 @@ public:
         for (std::size_t k = 0; k < pts.size(); ++k)
             points[k] = pts[k].template head<dim>();
     }
+    /// The shape as a spheropolygon (2D: polygon ⊕ disk [001 Eq. 37]) for the SDEM body–body
+    /// law, in the body frame; nullptr (the default) for a shape that is not one. 2D
+    /// `spheropolygon`, `box` (4 vertices, a = 0) and `disk` (1 vertex, a = R) answer it.
+    virtual const SpheroPolygon* spheroPolygon() const { return nullptr; }
     /// Spacing of the sampled field behind distance() [m]; 0 for an exact (analytic) shape.
     virtual double samplingSpacing() const { return 0.0; }
 

@@ -19,9 +19,12 @@ template <int dim> SphereShape<dim>::SphereShape(const Dictionary& dict) {
     if (type == "disk" && dim != 2) dict.error("type", "'disk' is 2D; use 'sphere' in 3D");
     radius_ = dict.getScalar("radius", Bounds::positive());
     dict.checkUnknownKeys();
+    sp_.radius = radius_;
 }
 
-template <int dim> SphereShape<dim>::SphereShape(double radius) : radius_(radius) {}
+template <int dim> SphereShape<dim>::SphereShape(double radius) : radius_(radius) {
+    sp_.radius = radius_;
+}
 
 template <int dim> double SphereShape<dim>::distance(const Vec<dim>& x, Vec<dim>& normal) const {
     const double r = x.norm();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "rigid/Shape.hpp"
+#include "rigid/SpheroPolygon.hpp"
 
 namespace mpm {
 
@@ -29,9 +30,12 @@ public:
         points.assign(1, Vec<dim>::Zero());
         radii.assign(1, radius_);
     }
+    /// 2D: one vertex at the centre with a = r (SDEM contact); 3D: none.
+    const SpheroPolygon* spheroPolygon() const override { return dim == 2 ? &sp_ : nullptr; }
 
 private:
     double radius_ = 0.0;
+    SpheroPolygon sp_{{Vec<2>::Zero()}, 0.0};
 };
 
 } // namespace mpm

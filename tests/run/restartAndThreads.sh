@@ -3,7 +3,7 @@
 #  1. OMP_NUM_THREADS=1 and 2 give bit-identical particles.vtu at every write and identical
 #     function-object output;
 #  2. a run 0 → T and a run 0 → T/2 resumed to T (startFrom latestTime) give a bit-identical
-#     (bodyContact2D: with body–body contact history in uniform/bodyContacts at T/2;
+#     (bodyContact2D, sdemBodies2D: with body–body contact history in uniform/bodyContacts at T/2;
 #     viscoelastic2D: with the stored elastic stress σᵉ of flowing points at T/2;
 #     slipWalls2D: with the USF wall contact of the last grid update in uniform/wallContact)
 #     final particles.vtu;
@@ -18,7 +18,7 @@ run() { # case threads [extra args]
         { echo "FAIL: mpmFoam failed on $dir"; cat "$dir/log.mpmFoam.$threads"; exit 1; }
 }
 
-for c in restart2D restart3D restartBodies2D bodyContact2D vibratedBlock2D viscoelastic2D slipWalls2D; do
+for c in restart2D restart3D restartBodies2D bodyContact2D sdemBodies2D vibratedBlock2D viscoelastic2D slipWalls2D; do
     src=$root/tests/cases/$c
     for t in 1 2; do
         rm -rf "$work/$c.$t" && cp -r "$src" "$work/$c.$t"
