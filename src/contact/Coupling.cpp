@@ -15,15 +15,16 @@ Coupling<dim>::Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws,
     : laws_(std::move(laws)), lattice_(lattice && lattice->any() ? lattice : nullptr) {}
 
 template <int dim>
-const PeriodicLattice<dim>* Coupling<dim>::imagesFor(const RigidBody<dim>& body) const {
+const PeriodicLattice<dim>* Coupling<dim>::imagesFor(const RigidBody<dim>& body,
+                                                     double searchReach) const {
     if (!lattice_) return nullptr;
-    const double reach = body.shape().boundingRadius() + maxRadius_;
+    const double reach = body.shape().boundingRadius() + searchReach;
     for (int d = 0; d < dim; ++d) {
         if (!lattice_->periodic(d) || 2 * reach < lattice_->period()[d]) continue;
         if (body.motion() == Motion::Fixed) return nullptr; // coupled where it lies
         std::ostringstream os;
         os << "rigid body '" << body.name() << "': its bounding radius "
-           << body.shape().boundingRadius() << " m plus the coupling radius " << maxRadius_
+           << body.shape().boundingRadius() << " m plus the coupling radius " << searchReach
            << " m is not less than half the period " << lattice_->period()[d]
            << " m: a point could touch two of its periodic images";
         throw RunError(os.str());
@@ -108,14 +109,16 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
+        const CouplingLaw<dim>& law = *laws_[b];
         std::vector<double>& slip = p.scalar(slip_[b]);
-        const PeriodicLattice<dim>* images = imagesFor(body);
+        const double reach = searchReach(law);
+        const PeriodicLattice<dim>* images = imagesFor(body, reach);
         // Narrow phase in parallel over the broad phase's points, kept in their order.
-        nearPoints(body, images, p, sort, grid);
+        nearPoints(body, images, p, reach, sort, grid);
         contacts_.clear();
         for (std::size_t k = 0; k < near_.size(); ++k) {
             const Index i = near_[k];
-            const double rp = radius(p.volume0[i]);
+            const double rp = law.contactRadius(radius(p.volume0[i]));
             if (phi_[k] >= rp) {
                 slip[i] = 0; // out of contact: the slip history restarts
                 continue;
@@ -125,11 +128,20 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
                                  p.v[i] - body.velocityAt(imageOf(images, p.x[i], body)), rp,
                                  p.mass[i], wave[m]});
         }
+        if (law.resetsAllSlip()) { // also points the broad phase no longer reaches
+            kept_.resize(contacts_.size());
+            for (std::size_t k = 0; k < contacts_.size(); ++k)
+                kept_[k] = slip[contacts_[k].particle];
+            std::fill(slip.begin(), slip.end(), 0.0);
+            for (std::size_t k = 0; k < contacts_.size(); ++k)
+                slip[contacts_[k].particle] = kept_[k];
+        }
         forces_.resize(contacts_.size());
-        laws_[b]->forces(contacts_, dt, slip, forces_);
+        law.forces(contacts_, dt, slip, forces_);
         for (std::size_t k = 0; k < contacts_.size(); ++k) {
             const Index i = contacts_[k].particle;
-            body.addForce(-forces_[k], imageOf(images, p.x[i], body));
+            body.addForce(-forces_[k],
+                          law.contactPoint(imageOf(images, p.x[i], body), contacts_[k]));
             const int m = p.material[i];
             const bool gasified = p.mass[i] < criticalDensity[m] * p.volume[i];
             (gasified ? localPoints_ : gridPoints_).push_back(i);
@@ -161,8 +173,8 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
     for (std::size_t b = 0; b < bodies.size() && b < nearOf_.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
-        const PeriodicLattice<dim>* images = imagesFor(body);
         const CouplingLaw<dim>& law = *laws_[b];
+        const PeriodicLattice<dim>* images = imagesFor(body, searchReach(law));
         const std::vector<Index>& near = nearOf_[b];
         const std::vector<double>& phi0 = phiOf_[b];
         const double reach = maxDisplacement + pushed +
@@ -214,11 +226,11 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
 
 template <int dim>
 void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const PeriodicLattice<dim>* images,
-                               const Particles<dim>& p, const BlockSort<dim>& sort,
+                               const Particles<dim>& p, double reach, const BlockSort<dim>& sort,
                                const Grid<dim>& grid) {
     near_.clear();
     if (!images) {
-        forParticlesNear(body, Vec<dim>::Zero(), p, maxRadius_, sort, grid,
+        forParticlesNear(body, Vec<dim>::Zero(), p, reach, sort, grid,
                          [&](Index i) { near_.push_back(i); });
     } else {
         // Every image x_b + n∘L that is the nearest image of some point of the box [lo, hi)
@@ -231,7 +243,7 @@ void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const PeriodicLattice
         IVec<dim> n = first;
         while (true) {
             const Vec<dim> shift = n.template cast<double>().cwiseProduct(images->period());
-            forParticlesNear(body, shift, p, maxRadius_, sort, grid, [&](Index i) {
+            forParticlesNear(body, shift, p, reach, sort, grid, [&](Index i) {
                 if (images->imageIndex(p.x[i], centre) == n) near_.push_back(i);
             });
             int d = 0;

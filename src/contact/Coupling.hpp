@@ -17,9 +17,11 @@ namespace mpm {
 /// Particle–rigid-body coupling of all bodies (DESIGN §4, [000 §3], [004 §4]).
 ///
 /// Per step: (1) broad phase — only particles in grid blocks overlapping a body's bounding
-/// sphere grown by r_p are tested; (2) narrow phase — the body's signed distance in its own
-/// frame [004 §4.2]; (3) the body's law gives the force on each point; the body receives
-/// −f and the torque r × (−f) [004 Eq. 41–42]. Forces of dense points go to the grid in P2G
+/// sphere grown by r_p (plus the law's search band) are tested, every step; (2) narrow phase —
+/// the body's signed distance in its own frame [004 §4.2]; (3) the body's law gives the force
+/// on each point; the body receives −f at the law's contact point p (x_p; `sdem`: the middle of
+/// the overlap) and the torque (p − x_b) × (−f) [004 Eq. 41–42], [001 Eq. 49–50]. Forces of
+/// dense points go to the grid in P2G
 /// [000 Eq. 19–20]; a gasified point (ρ_p < ρ_c) keeps its force locally (its velocity changes
 /// by Δt f/m_p after G2P) and transfers nothing to the grid. After the bodies move, points of
 /// non-penetrating (barrier) bodies closer than ξ_min are projected back to ξ_min and lose
@@ -113,12 +115,19 @@ private:
     /// The points the broad phase keeps for `body` (near_, in block order; with `images`, image
     /// by image) with their signed distance phi_ and normal normals_, evaluated in parallel.
     void nearPoints(const RigidBody<dim>& body, const PeriodicLattice<dim>* images,
-                    const Particles<dim>& p, const BlockSort<dim>& sort, const Grid<dim>& grid);
+                    const Particles<dim>& p, double reach, const BlockSort<dim>& sort,
+                    const Grid<dim>& grid);
+
+    /// How far from a body's surface `law` must find points: its largest coupling radius plus
+    /// its search band [m] (the barrier and linear spring: r_p,max).
+    double searchReach(const CouplingLaw<dim>& law) const {
+        return law.contactRadius(maxRadius_) + law.searchBand();
+    }
 
     /// The lattice whose images `body` meets points through, or nullptr (no periodic face, or a
     /// fixed body too large for one image); throws RunError for a moving body with
-    /// 2 (R + r_p,max) ≥ L along a periodic axis.
-    const PeriodicLattice<dim>* imagesFor(const RigidBody<dim>& body) const;
+    /// 2 (R + reach) ≥ L along a periodic axis (`reach`: searchReach of its law).
+    const PeriodicLattice<dim>* imagesFor(const RigidBody<dim>& body, double reach) const;
     /// The image of point x nearest the body's centre (x itself when `images` is null).
     static Vec<dim> imageOf(const PeriodicLattice<dim>* images, const Vec<dim>& x,
                             const RigidBody<dim>& body) {
@@ -137,6 +146,7 @@ private:
     std::vector<std::vector<double>> phiOf_;
     std::vector<Contact<dim>> contacts_;
     std::vector<Vec<dim>> forces_;
+    std::vector<double> kept_; ///< the contacts' slip while the others are reset
     std::vector<Index> gridPoints_, localPoints_;
     std::vector<Vec<dim>> gridForces_, localForces_;
     mutable double minGap_ = 1e300;

@@ -48,6 +48,20 @@ public:
 
     double friction() const { return mu_; }
 
+    /// The coupling radius of a point whose default is r_p = (V_p⁰)^(1/dim) [m]: that default,
+    /// or a law's own (`sdem`'s `radius`).
+    virtual double contactRadius(double rpDefault) const { return rpDefault; }
+    /// Width of the band beyond r_p searched every step [m] (`sdem`'s Verlet distance V_d): the
+    /// points of φ < r_p + band are the candidates; forces act for φ < r_p only.
+    virtual double searchBand() const { return 0.0; }
+    /// Where −f acts on the body for contact `c` of a point at x (the body's torque is
+    /// (p − x_b) × (−f)): x itself by default [004 Eq. 41–42].
+    virtual Vec<dim> contactPoint(const Vec<dim>& x, const Contact<dim>&) const { return x; }
+    /// True if the slip of a point out of contact must read 0 at the next contact, wherever the
+    /// point went meanwhile (a tangential spring history): the coupling then zeroes every
+    /// point's slip outside contact each step, not only those the broad phase visits.
+    virtual bool resetsAllSlip() const { return false; }
+
     static std::unique_ptr<CouplingLaw> create(const Dictionary& dict, double h);
 
 protected:

@@ -5,7 +5,8 @@
 #  2. a run 0 → T and a run 0 → T/2 resumed to T (startFrom latestTime) give a bit-identical
 #     (bodyContact2D, sdemBodies2D: with body–body contact history in uniform/bodyContacts at T/2;
 #     viscoelastic2D: with the stored elastic stress σᵉ of flowing points at T/2;
-#     slipWalls2D: with the USF wall contact of the last grid update in uniform/wallContact)
+#     slipWalls2D: with the USF wall contact of the last grid update in uniform/wallContact;
+#     sdemBlock2D: with the sdem coupling's tangential springs δ_t (contactSlip) at T/2)
 #     final particles.vtu;
 #  3. ParaView's readers (VTK's XML readers) load particles.pvd and every time directory.
 set -euo pipefail
@@ -18,7 +19,7 @@ run() { # case threads [extra args]
         { echo "FAIL: mpmFoam failed on $dir"; cat "$dir/log.mpmFoam.$threads"; exit 1; }
 }
 
-for c in restart2D restart3D restartBodies2D bodyContact2D sdemBodies2D vibratedBlock2D viscoelastic2D slipWalls2D; do
+for c in restart2D restart3D restartBodies2D bodyContact2D sdemBodies2D vibratedBlock2D viscoelastic2D slipWalls2D sdemBlock2D; do
     src=$root/tests/cases/$c
     for t in 1 2; do
         rm -rf "$work/$c.$t" && cp -r "$src" "$work/$c.$t"
@@ -68,6 +69,16 @@ r.Update()
 d = r.GetOutput().GetPointData()
 sys.exit(not ((vtk_to_numpy(d.GetArray("flowState")) == 1).any() and
               abs(vtk_to_numpy(d.GetArray("elasticStress"))).max() > 0))
+PY
+    fi
+    if [[ $c == sdemBlock2D ]]; then # the restart must carry non-zero tangential springs
+        "$py" - "$half/$mid/particles.vtu" <<'PY' || { echo "FAIL: $c: no point with a stored tangential spring at $mid (the test would prove nothing)"; fail=1; }
+import sys, vtk
+from vtk.util.numpy_support import vtk_to_numpy
+r = vtk.vtkXMLUnstructuredGridReader()
+r.SetFileName(sys.argv[1])
+r.Update()
+sys.exit(not (abs(vtk_to_numpy(r.GetOutput().GetPointData().GetArray("contactSlip"))) > 0).any())
 PY
     fi
     last=$(ls -d "$work/$c.2"/[0-9]* | xargs -n1 basename | sort -g | tail -1)

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "contact/SdemCoupling.hpp"
+
+#include "core/Parallel.hpp"
+
+#include <cmath>
+
+namespace mpm {
+
+template <int dim>
+SdemCoupling<dim>::SdemCoupling(const Dictionary& dict, double h) : CouplingLaw<dim>(dict, h) {
+    if constexpr (dim != 2)
+        dict.error("type", "the sdem coupling is 2D only (seed 001): its tangential spring δ_t "
+                           "is a scalar along the in-plane tangent; use barrier or linearSpring");
+    if (dict.has("slipThreshold"))
+        dict.error("slipThreshold", "not a key of sdem: its friction is the k_t spring with the "
+                                    "Coulomb cap μ k_n ξ, not the smoothed law");
+    kn_ = dict.getScalar("kn", Bounds::positive());
+    kt_ = dict.getScalarOr("kt", 0.0, Bounds::nonNegative());
+    verletDistance_ = dict.getScalarOr("verletDistance", 0.0, Bounds::nonNegative());
+    if (dict.has("radius")) radius_ = dict.getScalar("radius", Bounds::positive());
+}
+
+template <int dim> Vec<dim> SdemCoupling<dim>::tangent(const Vec<dim>& n) {
+    Vec<dim> t = Vec<dim>::Zero();
+    if constexpr (dim == 2) t = Vec<dim>(-n[1], n[0]);
+    return t;
+}
+
+template <int dim>
+void SdemCoupling<dim>::forces(const std::vector<Contact<dim>>& contacts, double dt,
+                               std::vector<double>& slip, std::vector<Vec<dim>>& f) const {
+    const double mu = this->mu_;
+    const Index n = static_cast<Index>(contacts.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+    for (Index k = 0; k < n; ++k) {
+        const Contact<dim>& c = contacts[k];
+        const double xi = std::max(c.rp - c.phi, 0.0); // overlap [001 Eq. 44]
+        const double fn = kn_ * xi;
+        const Vec<dim> t = tangent(c.normal);
+        double& delta = slip[c.particle];
+        if (kt_ > 0) {
+            delta += c.vRel.dot(t) * dt; // δ_t ← δ_t + (v_rel · t) Δt
+            const double cap = mu * fn;
+            if (kt_ * std::fabs(delta) > cap) delta = std::copysign(cap / kt_, delta); // sliding
+        } else {
+            delta = 0;
+        }
+        f[k] = fn * c.normal - (kt_ * delta) * t; // [001 Eq. 43]
+    }
+}
+
+template <int dim> double SdemCoupling<dim>::stableDeltaT(double m, double) const {
+    return 2.0 * M_PI * std::sqrt(m / kn_);
+}
+
+template class SdemCoupling<2>;
+template class SdemCoupling<3>;
+
+MPM_REGISTER(CouplingLawRegistry<2>, SdemCoupling<2>, "sdem");
+MPM_REGISTER(CouplingLawRegistry<3>, SdemCoupling<3>, "sdem");
+
+} // namespace mpm
