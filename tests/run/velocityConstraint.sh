@@ -16,7 +16,8 @@ for variant in table value; do
     threads=2
     if [ "$variant" = value ]; then
         threads=1
-        printf 'drive:\n  material: block\n  value: [0.2, 0.1]\n' >"$dir/constant/velocityConstraints"
+        printf 'drive:\n  material: block\n  value: [0.2, 0.1]\n' \
+            >"$dir/constant/velocityConstraints"
         sed -i 's/^stressUpdate: .*/stressUpdate: USF/; s/^transfer: .*/transfer: pic/' \
             "$dir/system/mpmSchemes"
     fi
