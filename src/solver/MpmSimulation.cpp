@@ -37,6 +37,16 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         criticalDensityOf_.push_back(m->criticalDensity());
         m->declareState(particles_);
     }
+    if (cs.exists("constant/velocityConstraints")) {
+        std::vector<std::string> names;
+        for (const auto& m : materials_)
+            names.push_back(m->name());
+        const Dictionary dict = cs.read("constant/velocityConstraints");
+        constraints_ = VelocityConstraints<dim>(dict, names);
+        if (bc_.anyPeriodic())
+            dict.error("", "velocity constraints are not available with periodic faces");
+        reach_.assign(constraints_.size(), std::vector<double>(grid_.numNodes(), 0.0));
+    }
     if (!bodies_.empty()) {
         coupling_ = std::make_unique<Coupling<dim>>(bodies_.takeCouplingLaws(), &bc_.lattice());
         coupling_->declareState(particles_, bodies_.bodies());
@@ -255,6 +265,29 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
     // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
     bc_.fold(grid_, activeBlocks_, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
+    if (!constraints_.empty()) markConstrainedNodes();
+}
+
+template <int dim> void MpmSimulation<dim>::markConstrainedNodes() {
+    inMaterial_.resize(particles_.size());
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+        const int m = constraints_.material(k);
+        for (std::size_t p = 0; p < particles_.size(); ++p)
+            inMaterial_[p] = particles_.material[p] == m ? 1.0 : 0.0;
+        transfer_->scatterScalar(inMaterial_, reach_[k], sort_);
+    }
+}
+
+template <int dim>
+void MpmSimulation<dim>::applyVelocityConstraints(std::vector<Vec<dim>>& v, double t) {
+    if (constraints_.empty() || preloading_) return;
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+        const Vec<dim> w = constraints_.velocity(k, t);
+        const std::vector<double>& reach = reach_[k];
+        grid_.forEachNode(activeBlocks_, [&](Index i) {
+            if (reach[i] > 0) constraints_.set(k, w, v[i]);
+        });
+    }
 }
 
 template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
@@ -264,6 +297,7 @@ template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
         grid_.vOld[node] = m > 0 ? Vec<dim>(grid_.momentum[node] / m) : Vec<dim>::Zero();
     });
     bc_.constrain(grid_, grid_.vOld, time_->value() - dt_);
+    applyVelocityConstraints(grid_.vOld, time_->value() - dt_);
 }
 
 template <int dim> void MpmSimulation<dim>::velocityGradient() {
@@ -307,6 +341,7 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
         }
     });
     bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
+    applyVelocityConstraints(grid_.v, time_->value());
 }
 
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "boundary/BoundaryConditions.hpp"
+#include "boundary/VelocityConstraints.hpp"
 #include "case/Case.hpp"
 #include "case/Time.hpp"
 #include "contact/Coupling.hpp"
@@ -57,6 +58,10 @@ private:
     void advanceBodies(double dt);
     void pushPointsOutOfBodies(double dt);
     void checkBodies();
+    /// `constant/velocityConstraints`: which nodes each entry reaches (after P2G) and
+    /// v_a ← w_a(t) on them.
+    void markConstrainedNodes();
+    void applyVelocityConstraints(std::vector<Vec<dim>>& v, double t);
     // Phases a stress-update order places (StressPhases).
     void gridVelocityFromMomentum() override;
     void velocityGradient() override;
@@ -114,7 +119,10 @@ private:
     std::vector<Index> activeBlocks_;
     double dt_ = 0; ///< size of the step under way
     Index removed_ = 0;
-    double damping_ = 0; ///< local (Cundall) damping coefficient α [-]
+    double damping_ = 0;                     ///< local (Cundall) damping coefficient α [-]
+    VelocityConstraints<dim> constraints_;   ///< none without the file
+    std::vector<std::vector<double>> reach_; ///< per constraint: Σ_p w_ip over its points
+    std::vector<double> inMaterial_;         ///< scratch: 1 for the constraint's points
     PreloadSettings preload_;
     bool preloading_ = false;
     long preloadIndex_ = 0;
