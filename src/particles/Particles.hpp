@@ -52,7 +52,7 @@ template <int dim> struct Particles {
     std::vector<Mat3> stress;          ///< Cauchy stress σ [Pa], tension positive
     std::vector<double> mass;          ///< m_p [kg] (per metre of depth in 2D)
     std::vector<double> volume0;       ///< V_p at seeding [m³]
-    std::vector<double> volume;        ///< V_p = J V_p⁰ [m³]
+    std::vector<double> volume;        ///< V_p = J V_p⁰, or from the rate [002 Eq. 76] [m³]
     std::vector<double> plasticStrain; ///< accumulated plastic shear strain [-]
     std::vector<Index> id;             ///< stable identity, kept across sorting and restart
     std::vector<int> material;         ///< index into the material list
