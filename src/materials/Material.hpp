@@ -71,6 +71,12 @@ public:
     /// Stored elastic energy of particle i [J] (per metre of depth in 2D).
     virtual double strainEnergy(const Particles<dim>& p, Index i) const = 0;
 
+    /// The stress is a rate form that never reads F: the volume then follows
+    /// V ← V exp(Δt tr L) [002 Eq. 76], positive even in a step whose 1 + Δt L inverts (a point
+    /// of a granular gas), and F is only written. False (the default): V = det F V⁰, and
+    /// det F ≤ 0 stops the run.
+    virtual bool volumeFromRate() const { return false; }
+
     /// Trans-phase critical density ρ_c [kg/m³] [000 Eq. 10, 18–19]: a point whose current
     /// density ρ_p = m_p/V_p is below ρ_c is gasified (grains out of contact, bulk modulus 0):
     /// it carries no stress and takes no coupling contact force. 0 (the default): never.

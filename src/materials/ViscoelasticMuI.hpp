@@ -73,6 +73,7 @@ public:
     /// under pure FLIP a force added to a separated point's own velocity is never taken back
     /// (the silo floor rang up to 48 m/s).
     double criticalDensity() const override { return 0.0; }
+    bool volumeFromRate() const override { return true; } ///< [002 Eq. 76]
     /// ρ_c of the separation rule [002 Eq. 46–47] [kg/m³].
     double separationDensity() const { return rhoC_; }
 

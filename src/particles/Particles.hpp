@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -50,7 +52,7 @@ template <int dim> struct Particles {
     std::vector<Mat3> stress;          ///< Cauchy stress σ [Pa], tension positive
     std::vector<double> mass;          ///< m_p [kg] (per metre of depth in 2D)
     std::vector<double> volume0;       ///< V_p at seeding [m³]
-    std::vector<double> volume;        ///< V_p = J V_p⁰ [m³]
+    std::vector<double> volume;        ///< V_p = J V_p⁰, or from the rate [002 Eq. 76] [m³]
     std::vector<double> plasticStrain; ///< accumulated plastic shear strain [-]
     std::vector<Index> id;             ///< stable identity, kept across sorting and restart
     std::vector<int> material;         ///< index into the material list
@@ -110,17 +112,20 @@ template <int dim> struct Particles {
         forEachArray([n](auto& a) { a.resize(n); });
     }
 
-    /// Kinematics of a step [002 Eq. 76]: F ← (1 + Δt L) F, V = det(F) V⁰. Returns the first
-    /// particle with det F ≤ 0 (an inverted element), or size() if none.
-    Index updateDeformation(double dt) {
+    /// Kinematics of a step: F ← (1 + Δt L) F, and V = det(F) V⁰, or, for the particles of a
+    /// material flagged in `volumeFromRate` (indexed by material), V ← V exp(Δt tr L)
+    /// [002 Eq. 76]. Returns the first particle whose volume is not positive and finite (det F ≤ 0:
+    /// an inverted element), or size() if none.
+    Index updateDeformation(double dt, const std::vector<char>& volumeFromRate) {
         const Index n = static_cast<Index>(size());
         Index inverted = n;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)
         for (Index i = 0; i < n; ++i) {
             F[i] = (Mat<dim>::Identity() + dt * L[i]) * F[i];
-            const double J = F[i].determinant();
-            if (!(J > 0)) inverted = std::min(inverted, i);
-            volume[i] = J * volume0[i];
+            volume[i] = volumeFromRate[material[i]] ? volume[i] * std::exp(dt * L[i].trace())
+                                                    : F[i].determinant() * volume0[i];
+            if (!(volume[i] > 0 && volume[i] < std::numeric_limits<double>::infinity()))
+                inverted = std::min(inverted, i);
         }
         return inverted;
     }

@@ -155,6 +155,9 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
 }
 
 template <int dim> void MpmSimulation<dim>::buildMaterialLists() {
+    volumeFromRate_.resize(materials_.size());
+    for (std::size_t m = 0; m < materials_.size(); ++m)
+        volumeFromRate_[m] = materials_[m]->volumeFromRate();
     materialParticles_.assign(materials_.size(), {});
     for (std::size_t i = 0; i < particles_.size(); ++i)
         materialParticles_[particles_.material[i]].push_back(static_cast<Index>(i));
@@ -373,11 +376,15 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
     assert(gradientSeen(particles_, grid_,
                         order_->gradientInGridToParticle() ? grid_.v : grid_.vOld) &&
            "the stress update saw no velocity gradient in a non-uniform flow");
-    // Kinematics: [L ← L̄ (F̄ anti-locking)], F ← (1 + Δt L) F, V = det(F) V⁰ [002 Eq. 76].
+    // Kinematics: [L ← L̄ (F̄ anti-locking)], F ← (1 + Δt L) F, V = det(F) V⁰ or, for rate-form
+    // materials, V ← V exp(Δt tr L) [002 Eq. 76] (Material::volumeFromRate).
     if (fBar_) fBar_->apply(particles_, grid_, *transfer_, sort_, dt);
-    const Index inverted = particles_.updateDeformation(dt);
+    const Index inverted = particles_.updateDeformation(dt, volumeFromRate_);
     if (inverted < numParticles())
-        fail("constitutive", inverted, "has det F <= 0 (inverted element)");
+        fail("constitutive", inverted,
+             volumeFromRate_[particles_.material[inverted]]
+                 ? "has a volume that is not finite (velocity gradient not finite)"
+                 : "has det F <= 0 (inverted element)");
     for (std::size_t m = 0; m < materials_.size(); ++m) {
         const Index bad = materials_[m]->updateStress(particles_, materialParticles_[m], dt);
         if (bad >= 0) fail("constitutive", bad, "has a stress that is not finite");

@@ -111,6 +111,7 @@ private:
     Particles<dim> particles_;
     Particles<dim> scratch_; ///< reorder buffers, kept between reorders
     std::vector<std::unique_ptr<Material<dim>>> materials_;
+    std::vector<char> volumeFromRate_; ///< per material: V from Eq. 76, not det F
     std::vector<std::vector<Index>> materialParticles_;
     std::unique_ptr<Transfer<dim>> transfer_;
     std::unique_ptr<StressUpdateOrder> order_;

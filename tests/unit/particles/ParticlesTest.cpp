@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -79,6 +80,38 @@ TEST(ParticlesTest, EmptyLikeKeepsDeclarationsNotValues) {
     ASSERT_EQ(q.scalars.size(), 1u);
     EXPECT_EQ(q.scalars[0].info.name, "rate");
     EXPECT_FALSE(q.scalars[0].info.written);
+}
+
+TEST(ParticlesTest, VolumeFromRateIsExactUnderRotationAndNeverInverts) {
+    // Material 0: V = det F V⁰; material 1: V ← V exp(Δt tr L) [002 Eq. 76].
+    Particles<2> p = makeParticles(2);
+    p.material = {0, 1};
+    for (int i = 0; i < 2; ++i) {
+        p.F[i].setIdentity();
+        p.volume0[i] = p.volume[i] = 2.0;
+    }
+    const std::vector<char> fromRate{0, 1};
+    // A spin ω = 50 rad/s for 100 steps of 1 ms: det(1 + Δt W) = 1 + (Δt ω)² per step inflates
+    // the det F volume; the rate form keeps it exactly.
+    for (int i = 0; i < 2; ++i)
+        p.L[i] << 0.0, -50.0, 50.0, 0.0;
+    for (int n = 0; n < 100; ++n)
+        ASSERT_EQ(p.updateDeformation(1e-3, fromRate), 2);
+    EXPECT_NEAR(p.volume[0], 2.0 * std::pow(1.0 + 2.5e-3, 100), 1e-12);
+    EXPECT_EQ(p.volume[1], 2.0);
+    // A compression of Δt tr L = −1.5 along x in one step inverts F: det F ≤ 0 stops material 0,
+    // while the rate form gives V e^−1.5 > 0 (its F is a diagnostic).
+    for (int i = 0; i < 2; ++i) {
+        p.F[i].setIdentity();
+        p.volume[i] = 2.0;
+        p.L[i] << -1500.0, 0.0, 0.0, 0.0;
+    }
+    EXPECT_EQ(p.updateDeformation(1e-3, fromRate), 0);
+    EXPECT_NEAR(p.volume[1], 2.0 * std::exp(-1.5), 1e-15);
+    // Only the rate-form point: no failure.
+    p.material = {1, 1};
+    p.volume = {2.0, 2.0};
+    EXPECT_EQ(p.updateDeformation(1e-3, fromRate), 2);
 }
 
 } // namespace
