@@ -4,6 +4,7 @@
 #include "case/Dictionary.hpp"
 #include "core/Registry.hpp"
 #include "core/Types.hpp"
+#include "grid/NodeArray.hpp"
 
 #include <memory>
 #include <vector>
@@ -26,9 +27,9 @@ struct PatchNodes {
 
 /// Grid node fields a condition reads after the grid update (the reaction's reference state).
 template <int dim> struct NodeState {
-    const std::vector<double>& mass;
-    const std::vector<Vec<dim>>& vOld;  ///< velocity before the update v⁰ [m/s]
-    const std::vector<Vec<dim>>& force; ///< internal + coupling force f [N]
+    const NodeArray<double>& mass;
+    const NodeArray<Vec<dim>>& vOld;  ///< velocity before the update v⁰ [m/s]
+    const NodeArray<Vec<dim>>& force; ///< internal + coupling force f [N]
 };
 
 /// A boundary condition of a patch of a grid face (`constant/grid` boundary.<face>[.<patch>]
@@ -40,9 +41,8 @@ public:
 
     /// Constrain the velocities v_i of the nodes of `p` that carry mass, at time t [s]
     /// (the P2G velocity: no reaction is recorded).
-    virtual void constrain(const PatchNodes& p, const FaceNormal& n,
-                           const std::vector<double>& mass, std::vector<Vec<dim>>& v,
-                           double t) const = 0;
+    virtual void constrain(const PatchNodes& p, const FaceNormal& n, const NodeArray<double>& mass,
+                           NodeArray<Vec<dim>>& v, double t) const = 0;
 
     /// Constrain the updated velocities v_i at time t and return the reaction, the force the
     /// material exerts on the patch, F = Σ m_i (v_i⁻ − v_i⁺)/Δt over the owner nodes [N]
@@ -50,9 +50,9 @@ public:
     /// condition acting on a node in this step (`touched` is 0), otherwise the velocity the
     /// previous condition left (edges and corners).
     virtual Vec<dim> constrainUpdate(const PatchNodes& p, const FaceNormal& n,
-                                     const NodeState<dim>& s, std::vector<Vec<dim>>& v,
+                                     const NodeState<dim>& s, NodeArray<Vec<dim>>& v,
                                      const Vec<dim>& gravity, double t, double dt,
-                                     std::vector<char>& touched) const = 0;
+                                     NodeArray<char>& touched) const = 0;
 
     /// The condition releases a node whose updated velocity leaves the wall (slip, friction).
     /// Its P2G velocity is then not constrained by the rule but by the contact the last grid
@@ -82,16 +82,16 @@ template <int dim> using BoundaryConditionRegistry = Registry<BoundaryCondition<
 /// time-dependent values evaluated once per patch), which the loops below apply inline.
 template <int dim, class Derived> class NodeRuleCondition : public BoundaryCondition<dim> {
 public:
-    void constrain(const PatchNodes& p, const FaceNormal& n, const std::vector<double>& mass,
-                   std::vector<Vec<dim>>& v, double t) const override {
+    void constrain(const PatchNodes& p, const FaceNormal& n, const NodeArray<double>& mass,
+                   NodeArray<Vec<dim>>& v, double t) const override {
         const auto rule = static_cast<const Derived&>(*this).rule(n, t);
         for (Index i : *p.nodes)
             if (mass[i] != 0) rule(v[i]);
     }
 
     Vec<dim> constrainUpdate(const PatchNodes& p, const FaceNormal& n, const NodeState<dim>& s,
-                             std::vector<Vec<dim>>& v, const Vec<dim>& gravity, double t, double dt,
-                             std::vector<char>& touched) const override {
+                             NodeArray<Vec<dim>>& v, const Vec<dim>& gravity, double t, double dt,
+                             NodeArray<char>& touched) const override {
         const auto rule = static_cast<const Derived&>(*this).rule(n, t);
         const std::vector<Index>& nodes = *p.nodes;
         const Index count = static_cast<Index>(nodes.size());

@@ -2,6 +2,7 @@
 #include "boundary/BoundaryConditions.hpp"
 #include "core/Parallel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -60,8 +61,8 @@ BoundaryConditions<dim>::BoundaryConditions(const Dictionary& gridDict, const Gr
 
     for (int f = 0; f < NumFaces; ++f)
         if (!faces_[f].periodic) assignNodes(faceDicts[f] ? &*faceDicts[f] : nullptr, f);
-    touched_.assign(grid.numNodes(), 0);
-    contact_.assign(grid.numNodes(), 0);
+    touched_.reset(grid.numNodes());
+    contact_.reset(grid.numNodes());
     for (const Face& face : faces_)
         for (const Patch& p : face.patches)
             hasUnilateral_ = hasUnilateral_ || p.condition->unilateral();
@@ -188,14 +189,13 @@ template <int dim> void BoundaryConditions<dim>::assignNodes(const Dictionary* f
     Face& face = faces_[f];
     const std::size_t numPatches = face.patches.size();
     const double tol = 1e-6 * grid_.h();
-    const IVec<dim> n = grid_.nodes();
     std::vector<std::vector<Index>> owners(numPatches), images(numPatches);
     std::vector<bool> seen(numPatches, false);
     for (Index k : grid_.faceNodes(f)) {
         // Tangential position of the node's owner (images follow their owners).
-        IVec<dim> c;
+        IVec<dim> c = grid_.nodeCoord(k);
         for (int d = 0; d < dim; ++d)
-            c[d] = lattice_->ownerCoord(d, static_cast<int>((k / grid_.stride(d)) % n[d]));
+            c[d] = lattice_->ownerCoord(d, c[d]);
         const Vec<dim> x = grid_.nodePosition(c);
         std::size_t in = 0;
         for (std::size_t q = 1; q < numPatches; ++q) {
@@ -251,7 +251,7 @@ const BoundaryCondition<dim>& BoundaryConditions<dim>::governing(const Face& fac
 }
 
 template <int dim>
-void BoundaryConditions<dim>::constrain(const Grid<dim>& g, std::vector<Vec<dim>>& v,
+void BoundaryConditions<dim>::constrain(const Grid<dim>& g, NodeArray<Vec<dim>>& v,
                                         double t) const {
     for (int f = 0; f < NumFaces; ++f) {
         const Face& face = faces_[f];
@@ -274,14 +274,21 @@ void BoundaryConditions<dim>::constrain(const Grid<dim>& g, std::vector<Vec<dim>
 
 template <int dim> std::vector<std::pair<Index, int>> BoundaryConditions<dim>::wallContact() const {
     std::vector<std::pair<Index, int>> contact;
-    for (Index i = 0; i < static_cast<Index>(contact_.size()); ++i)
-        if (contact_[i]) contact.emplace_back(i, contact_[i]);
+    for (const Face& face : faces_) // only face nodes can touch a wall
+        for (const Patch& p : face.patches)
+            for (Index i : p.nodes)
+                if (contact_[i]) contact.emplace_back(i, contact_[i]);
+    std::sort(contact.begin(), contact.end());
+    contact.erase(std::unique(contact.begin(), contact.end()), contact.end());
     return contact;
 }
 
 template <int dim>
 void BoundaryConditions<dim>::setWallContact(const std::vector<std::pair<Index, int>>& contact) {
-    std::fill(contact_.begin(), contact_.end(), 0);
+    for (const Face& face : faces_)
+        for (const Patch& p : face.patches)
+            for (Index i : p.nodes)
+                contact_[i] = 0;
     for (const auto& [node, axes] : contact) {
         MPM_ASSERT(node >= 0 && node < static_cast<Index>(contact_.size()));
         contact_[node] = static_cast<unsigned char>(axes);

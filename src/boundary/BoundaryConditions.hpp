@@ -46,7 +46,7 @@ public:
     /// free elsewhere: the
     /// velocity gradient then sees the wall the motion saw (this step's under MUSL, the last
     /// step's under USF), never a second decision of its own.
-    void constrain(const Grid<dim>& g, std::vector<Vec<dim>>& v, double t) const;
+    void constrain(const Grid<dim>& g, NodeArray<Vec<dim>>& v, double t) const;
     /// Constrain the updated velocity g.v at time t (the end of the step, tⁿ⁺¹) and store each
     /// face's reaction, F_f = Σ m_i (v_i⁻ − v_i⁺)/Δt over its owner nodes [N] (per metre in
     /// 2D), in `reactions` (zero on open and periodic faces); faces act in the order xMin,
@@ -84,7 +84,7 @@ public:
         lattice_->fold(g, activeBlocks, fields);
     }
     template <class T>
-    void foldField(std::vector<T>& q, const std::vector<Index>& activeBlocks) const {
+    void foldField(NodeArray<T>& q, const std::vector<Index>& activeBlocks) const {
         lattice_->foldField(q, activeBlocks);
     }
     void closeActiveBlocks(std::vector<Index>& blocks) { lattice_->closeActiveBlocks(blocks); }
@@ -139,8 +139,8 @@ private:
     std::unique_ptr<PeriodicLattice<dim>> lattice_; ///< built once the faces are read
     bool hasOpen_ = false;
     bool hasUnilateral_ = false;
-    std::vector<char> touched_;
-    std::vector<unsigned char> contact_; ///< per node: bit a = pressed against an axis-a wall
+    NodeArray<char> touched_;
+    NodeArray<unsigned char> contact_; ///< per node: bit a = pressed against an axis-a wall
 };
 
 } // namespace mpm

@@ -10,11 +10,11 @@ namespace mpm {
 template <int dim> class Open final : public BoundaryCondition<dim> {
 public:
     explicit Open(const Dictionary&) {}
-    void constrain(const PatchNodes&, const FaceNormal&, const std::vector<double>&,
-                   std::vector<Vec<dim>>&, double) const override {}
+    void constrain(const PatchNodes&, const FaceNormal&, const NodeArray<double>&,
+                   NodeArray<Vec<dim>>&, double) const override {}
     Vec<dim> constrainUpdate(const PatchNodes&, const FaceNormal&, const NodeState<dim>&,
-                             std::vector<Vec<dim>>&, const Vec<dim>&, double, double,
-                             std::vector<char>&) const override {
+                             NodeArray<Vec<dim>>&, const Vec<dim>&, double, double,
+                             NodeArray<char>&) const override {
         return Vec<dim>::Zero();
     }
     bool open() const override { return true; }

@@ -11,11 +11,11 @@ namespace mpm {
 template <int dim> class Periodic final : public BoundaryCondition<dim> {
 public:
     explicit Periodic(const Dictionary&) {}
-    void constrain(const PatchNodes&, const FaceNormal&, const std::vector<double>&,
-                   std::vector<Vec<dim>>&, double) const override {}
+    void constrain(const PatchNodes&, const FaceNormal&, const NodeArray<double>&,
+                   NodeArray<Vec<dim>>&, double) const override {}
     Vec<dim> constrainUpdate(const PatchNodes&, const FaceNormal&, const NodeState<dim>&,
-                             std::vector<Vec<dim>>&, const Vec<dim>&, double, double,
-                             std::vector<char>&) const override {
+                             NodeArray<Vec<dim>>&, const Vec<dim>&, double, double,
+                             NodeArray<char>&) const override {
         return Vec<dim>::Zero();
     }
     bool periodic() const override { return true; }

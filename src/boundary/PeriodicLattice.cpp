@@ -9,12 +9,11 @@ namespace mpm {
 
 template <int dim>
 PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bool, dim>& periodic)
-    : n_(grid.nodes()), periodic_(periodic), lo_(grid.lo()), hi_(grid.hi()),
+    : grid_(grid), n_(grid.nodes()), periodic_(periodic), lo_(grid.lo()), hi_(grid.hi()),
       period_(Vec<dim>::Zero()), nb_(grid.blocks()) {
     constexpr int pad = Grid<dim>::Pad;
     constexpr int bs = Grid<dim>::BlockSize;
     for (int d = 0; d < dim; ++d) {
-        stride_[d] = grid.stride(d);
         cells_[d] = n_[d] - 1 - 2 * pad;
         if (periodic_[d]) period_[d] = hi_[d] - lo_[d];
         any_ |= periodic_[d];
@@ -41,7 +40,6 @@ PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bo
     }
 
     // Image nodes grouped by block (counting sort), ascending within a block.
-    const Index numNodes = grid.numNodes();
     const Index numBlocks = grid.numBlocks();
     auto blockOfNode = [&](const IVec<dim>& c) {
         Index b = 0;
@@ -60,15 +58,15 @@ PeriodicLattice<dim>::PeriodicLattice(const Grid<dim>& grid, const std::array<bo
             next.assign(imageStart_.begin(), imageStart_.end() - 1);
         }
         IVec<dim> c = IVec<dim>::Zero();
-        for (Index k = 0; k < numNodes; ++k) {
+        for (Index f = 0; f < grid.numFileNodes(); ++f) { // x fastest
             bool image = false;
-            Index o = 0;
-            for (int d = dim - 1; d >= 0; --d) {
-                const int oc = ownerCoord(d, c[d]);
-                image |= oc != c[d];
-                o += oc * stride_[d];
+            IVec<dim> oc;
+            for (int d = 0; d < dim; ++d) {
+                oc[d] = ownerCoord(d, c[d]);
+                image |= oc[d] != c[d];
             }
             if (image) {
+                const Index k = grid.nodeIndex(c), o = grid.nodeIndex(oc);
                 const Index b = blockOfNode(c);
                 if (pass == 0) {
                     ++imageStart_[b + 1];
@@ -92,12 +90,10 @@ template <int dim> int PeriodicLattice<dim>::ownerCoord(int axis, int i) const {
 }
 
 template <int dim> Index PeriodicLattice<dim>::owner(Index k) const {
-    Index o = 0;
-    for (int d = 0; d < dim; ++d) {
-        const int c = static_cast<int>((k / stride_[d]) % n_[d]);
-        o += ownerCoord(d, c) * stride_[d];
-    }
-    return o;
+    IVec<dim> c = grid_.nodeCoord(k);
+    for (int d = 0; d < dim; ++d)
+        c[d] = ownerCoord(d, c[d]);
+    return grid_.nodeIndex(c);
 }
 
 template <int dim> bool PeriodicLattice<dim>::isOwner(Index k) const {

@@ -53,7 +53,7 @@ public:
     void fold(Grid<dim>& g, const std::vector<Index>& activeBlocks, unsigned fields) const;
     /// The same for any node field q (one entry per node), e.g. F̄'s nodal scalar.
     template <class T>
-    void foldField(std::vector<T>& q, const std::vector<Index>& activeBlocks) const {
+    void foldField(NodeArray<T>& q, const std::vector<Index>& activeBlocks) const {
         if (!any_) return;
         for (Index b : activeBlocks)
             for (Index k = imageStart_[b]; k < imageStart_[b + 1]; ++k)
@@ -90,8 +90,8 @@ public:
     }
 
 private:
+    const Grid<dim>& grid_;
     IVec<dim> n_;
-    std::array<Index, dim> stride_{};
     std::array<int, dim> cells_{}; ///< P along each axis
     std::array<bool, dim> periodic_{};
     bool any_ = false;

@@ -2,6 +2,7 @@
 #include "grid/Grid.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 namespace mpm {
@@ -37,31 +38,96 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
         origin_[d] = lo_[d] - Pad * h_;
         hi_[d] = lo_[d] + rounded * h_;
     }
-    numNodes_ = 1;
     numBlocks_ = 1;
+    numFileNodes_ = 1;
     for (int d = 0; d < dim; ++d) {
-        stride_[d] = numNodes_;
-        numNodes_ *= n_[d];
+        blockStride_[d] = NodesPerBlock * numBlocks_;
         numBlocks_ *= nb_[d];
+        numFileNodes_ *= n_[d];
     }
-    if (numNodes_ > Index(400) * 1000 * 1000)
-        dict.error("cellSize", "the grid would have more than 4e8 nodes");
+    numNodes_ = numBlocks_ * NodesPerBlock;
+    // The node fields are reserved, not committed (NodeArray): the limit is address space.
+    if (numNodes_ > Index(4) * 1000 * 1000 * 1000)
+        dict.error("cellSize", "the grid would have more than 4e9 nodes");
 
-    // Nodes on or beyond each face: layers 0..Pad on the low side, n-1-Pad..n-1 on the high side.
+    edge_.assign(numBlocks_, 0);
+    for (Index k = 0; k < numBlocks_; ++k) {
+        const IVec<dim> c = blockCoord(k);
+        for (int d = 0; d < dim; ++d)
+            if ((c[d] + 1) * BlockSize > n_[d]) edge_[k] = 1;
+    }
+
+    // Nodes on or beyond each face: layers 0..Pad on the low side, n-1-Pad..n-1 on the high
+    // side, listed x fastest.
     for (int f = 0; f < NumFaces; ++f) {
         const int axis = f / 2;
-        for (Index k = 0; k < numNodes_; ++k) {
-            const int i = static_cast<int>((k / stride_[axis]) % n_[axis]);
-            const bool on = (f % 2 == 0) ? i <= Pad : i >= n_[axis] - 1 - Pad;
-            if (on) faceNodes_[f].push_back(k);
+        IVec<dim> first = IVec<dim>::Zero(), end = n_;
+        if (f % 2 == 0)
+            end[axis] = Pad + 1;
+        else
+            first[axis] = n_[axis] - 1 - Pad;
+        IVec<dim> i = first;
+        while (true) {
+            faceNodes_[f].push_back(nodeIndex(i));
+            int d = 0;
+            while (d < dim && ++i[d] >= end[d])
+                i[d] = first[d], ++d;
+            if (d == dim) break;
         }
     }
 
-    mass.assign(numNodes_, 0.0);
-    momentum.assign(numNodes_, Vec<dim>::Zero());
-    force.assign(numNodes_, Vec<dim>::Zero());
-    vOld.assign(numNodes_, Vec<dim>::Zero());
-    v.assign(numNodes_, Vec<dim>::Zero());
+    mass.reset(numNodes_);
+    momentum.reset(numNodes_);
+    force.reset(numNodes_);
+    vOld.reset(numNodes_);
+    v.reset(numNodes_);
+    stillActive_.assign(numBlocks_, 0);
+}
+
+template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
+    // Blocks that stay active are zeroed in place (their pages stay committed); runs of
+    // blocks the material has left are zeroed and their whole pages released.
+    for (Index b : blocks)
+        stillActive_[b] = 1;
+    auto forFields = [this](Index block, Index count, auto&& op) {
+        const Index first = block * NodesPerBlock, n = count * NodesPerBlock;
+        op(mass, first, n);
+        op(momentum, first, n);
+        op(force, first, n);
+        op(vOld, first, n);
+        op(v, first, n);
+    };
+    const Index na = static_cast<Index>(active_.size());
+#pragma omp parallel for if (worthThreads(64 * na)) schedule(static)
+    for (Index k = 0; k < na; ++k)
+        if (stillActive_[active_[k]])
+            forFields(active_[k], 1, [](auto& field, Index first, Index n) {
+                std::memset(static_cast<void*>(field.data() + first), 0, n * sizeof(field[0]));
+            });
+    // Runs of left blocks, joined across gaps of blocks that were never active (zero already)
+    // up to a few blocks long.
+    constexpr Index MaxGap = 8;
+    for (Index k = 0; k < na;) {
+        const Index first = active_[k];
+        if (stillActive_[first]) {
+            ++k;
+            continue;
+        }
+        Index last = first;
+        ++k;
+        while (k < na && !stillActive_[active_[k]] && active_[k] - last <= MaxGap) {
+            bool free = true;
+            for (Index c = last + 1; c < active_[k]; ++c)
+                free = free && !stillActive_[c];
+            if (!free) break;
+            last = active_[k++];
+        }
+        forFields(first, last + 1 - first,
+                  [](auto& field, Index f, Index n) { field.release(f, n); });
+    }
+    for (Index b : blocks)
+        stillActive_[b] = 0;
+    active_ = std::move(blocks);
 }
 
 template class Grid<2>;

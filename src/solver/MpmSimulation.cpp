@@ -45,7 +45,9 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         constraints_ = VelocityConstraints<dim>(dict, names);
         if (bc_.anyPeriodic())
             dict.error("", "velocity constraints are not available with periodic faces");
-        reach_.assign(constraints_.size(), std::vector<double>(grid_.numNodes(), 0.0));
+        reach_.resize(constraints_.size());
+        for (auto& r : reach_)
+            r.reset(grid_.numNodes());
     }
     if (!bodies_.empty()) {
         coupling_ = std::make_unique<Coupling<dim>>(bodies_.takeCouplingLaws(), &bc_.lattice());
@@ -59,7 +61,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         fBar_ = std::make_unique<FBar<dim>>();
         if (bc_.anyPeriodic())
             fBar_->setNodalFold(
-                [this](std::vector<double>& q) { bc_.foldField(q, activeBlocks_); });
+                [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
     }
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
@@ -253,21 +255,15 @@ template <int dim> void MpmSimulation<dim>::computeCouplingForces(double dt) {
 
 template <int dim> void MpmSimulation<dim>::particleToGrid() {
     auto timer = timer_(PhaseTimer::P2G);
-    // Only nodes of last step's active blocks can be non-zero.
-    grid_.forEachNode(activeBlocks_, [this](Index i) {
-        grid_.mass[i] = 0;
-        grid_.momentum[i].setZero();
-        grid_.force[i].setZero();
-        grid_.vOld[i].setZero();
-        grid_.v[i].setZero();
-    });
-    activeBlocks_ = sort_.activeNodeBlocks();
-    bc_.closeActiveBlocks(activeBlocks_);
+    std::vector<Index> blocks = sort_.activeNodeBlocks();
+    bc_.closeActiveBlocks(blocks);
+    grid_.activate(std::move(blocks)); // zero, and the sparse grid follows the material
+    const std::vector<Index>& activeBlocks = grid_.activeBlocks();
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
     // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
-    bc_.fold(grid_, activeBlocks_, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
+    bc_.fold(grid_, activeBlocks, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
     if (!constraints_.empty()) markConstrainedNodes();
 }
 
@@ -277,17 +273,18 @@ template <int dim> void MpmSimulation<dim>::markConstrainedNodes() {
         const int m = constraints_.material(k);
         for (std::size_t p = 0; p < particles_.size(); ++p)
             inMaterial_[p] = particles_.material[p] == m ? 1.0 : 0.0;
+        grid_.forEachNode(grid_.activeBlocks(), [&](Index i) { reach_[k][i] = 0.0; });
         transfer_->scatterScalar(inMaterial_, reach_[k], sort_);
     }
 }
 
 template <int dim>
-void MpmSimulation<dim>::applyVelocityConstraints(std::vector<Vec<dim>>& v, double t) {
+void MpmSimulation<dim>::applyVelocityConstraints(NodeArray<Vec<dim>>& v, double t) {
     if (constraints_.empty() || preloading_) return;
     for (std::size_t k = 0; k < constraints_.size(); ++k) {
         const Vec<dim> w = constraints_.velocity(k, t);
-        const std::vector<double>& reach = reach_[k];
-        grid_.forEachNode(activeBlocks_, [&](Index i) {
+        const NodeArray<double>& reach = reach_[k];
+        grid_.forEachNode(grid_.activeBlocks(), [&](Index i) {
             if (reach[i] > 0) constraints_.set(k, w, v[i]);
         });
     }
@@ -295,7 +292,7 @@ void MpmSimulation<dim>::applyVelocityConstraints(std::vector<Vec<dim>>& v, doub
 
 template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
     auto timer = timer_(PhaseTimer::Grid);
-    grid_.forEachNode(activeBlocks_, [this](Index node) {
+    grid_.forEachNode(grid_.activeBlocks(), [this](Index node) {
         const double m = grid_.mass[node];
         grid_.vOld[node] = m > 0 ? Vec<dim>(grid_.momentum[node] / m) : Vec<dim>::Zero();
     });
@@ -311,17 +308,17 @@ template <int dim> void MpmSimulation<dim>::velocityGradient() {
 template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
     auto timer = timer_(PhaseTimer::P2G);
     transfer_->scatterForce(particles_, grid_, sort_);
-    bc_.fold(grid_, activeBlocks_, FoldForce);
+    bc_.fold(grid_, grid_.activeBlocks(), FoldForce);
 }
 
 template <int dim> void MpmSimulation<dim>::remapMomentum() {
     auto timer = timer_(PhaseTimer::P2G);
-    grid_.forEachNode(activeBlocks_, [this](Index i) {
+    grid_.forEachNode(grid_.activeBlocks(), [this](Index i) {
         grid_.mass[i] = 0;
         grid_.momentum[i].setZero();
     });
     transfer_->scatter(particles_, grid_, sort_, false);
-    bc_.fold(grid_, activeBlocks_, FoldMassMomentum);
+    bc_.fold(grid_, grid_.activeBlocks(), FoldMassMomentum);
 }
 
 template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
@@ -329,7 +326,7 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     const Vec<dim> g = gravity_;
     const double alpha = damping_;
     const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
-    grid_.forEachNode(activeBlocks_, [&](Index node) {
+    grid_.forEachNode(grid_.activeBlocks(), [&](Index node) {
         const double m = grid_.mass[node];
         if (m > 0) {
             // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
@@ -424,13 +421,14 @@ template <int dim> void MpmSimulation<dim>::readWallContact(const std::string& f
     d.checkUnknownKeys();
     std::vector<std::pair<Index, int>> contact;
     for (std::size_t k = 0; k < nodes.size(); ++k) {
-        const bool node = nodes[k] >= 0 && nodes[k] < static_cast<double>(grid_.numNodes()) &&
+        const bool node = nodes[k] >= 0 && nodes[k] < static_cast<double>(grid_.numFileNodes()) &&
                           nodes[k] == std::floor(nodes[k]);
         if (!node) d.error("nodes", "entry " + std::to_string(k) + " is not a node of the grid");
         if (!(flags[k] >= 1 && flags[k] < (1 << dim) && flags[k] == std::floor(flags[k])))
             d.error("flags", "entry " + std::to_string(k) + " is not an axis bit set (1 to " +
                                  std::to_string((1 << dim) - 1) + ")");
-        contact.emplace_back(static_cast<Index>(nodes[k]), static_cast<int>(flags[k]));
+        contact.emplace_back(grid_.nodeOfFileIndex(static_cast<Index>(nodes[k])),
+                             static_cast<int>(flags[k]));
     }
     bc_.setWallContact(contact);
 }
@@ -454,8 +452,14 @@ template <int dim> void MpmSimulation<dim>::write() {
                 io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
                                     accelerationWork_);
             if (!bodies_.empty()) bodies_.write(dir);
-            if (wallContactIsState())
-                io::writeIndexFlags(dir / "uniform" / "wallContact", "nodes", bc_.wallContact());
+            if (wallContactIsState()) {
+                // Files number the nodes x fastest (Grid::fileIndex), whatever the storage.
+                std::vector<std::pair<Index, int>> contact = bc_.wallContact();
+                for (auto& [node, axes] : contact)
+                    node = grid_.fileIndex(node);
+                std::sort(contact.begin(), contact.end());
+                io::writeIndexFlags(dir / "uniform" / "wallContact", "nodes", contact);
+            }
         },
         files);
 }

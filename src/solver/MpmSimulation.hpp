@@ -61,7 +61,7 @@ private:
     /// `constant/velocityConstraints`: which nodes each entry reaches (after P2G) and
     /// v_a ← w_a(t) on them.
     void markConstrainedNodes();
-    void applyVelocityConstraints(std::vector<Vec<dim>>& v, double t);
+    void applyVelocityConstraints(NodeArray<Vec<dim>>& v, double t);
     // Phases a stress-update order places (StressPhases).
     void gridVelocityFromMomentum() override;
     void velocityGradient() override;
@@ -117,13 +117,12 @@ private:
     std::unique_ptr<StressUpdateOrder> order_;
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
     BlockSort<dim> sort_;
-    std::vector<Index> activeBlocks_;
     double dt_ = 0; ///< size of the step under way
     Index removed_ = 0;
-    double damping_ = 0;                     ///< local (Cundall) damping coefficient α [-]
-    VelocityConstraints<dim> constraints_;   ///< none without the file
-    std::vector<std::vector<double>> reach_; ///< per constraint: Σ_p w_ip over its points
-    std::vector<double> inMaterial_;         ///< scratch: 1 for the constraint's points
+    double damping_ = 0;                   ///< local (Cundall) damping coefficient α [-]
+    VelocityConstraints<dim> constraints_; ///< none without the file
+    std::vector<NodeArray<double>> reach_; ///< per constraint: Σ_p w_ip over its points
+    std::vector<double> inMaterial_;       ///< scratch: 1 for the constraint's points
     PreloadSettings preload_;
     bool preloading_ = false;
     long preloadIndex_ = 0;

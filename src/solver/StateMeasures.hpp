@@ -88,16 +88,17 @@ double energyBudget(const Particles<dim>& p,
 /// velocity `v` it came from is not uniform — a stress-update order lost the phase that
 /// computes L (USF did, unnoticed, until the scheme matrix).
 template <int dim>
-bool gradientSeen(const Particles<dim>& p, const Grid<dim>& grid, const std::vector<Vec<dim>>& v) {
+bool gradientSeen(const Particles<dim>& p, const Grid<dim>& grid, const NodeArray<Vec<dim>>& v) {
     for (const auto& L : p.L)
         if (L.squaredNorm() > 0) return true;
     bool first = true, uniform = true;
     Vec<dim> v0 = Vec<dim>::Zero();
-    for (Index i = 0; i < grid.numNodes(); ++i) {
-        if (grid.mass[i] <= 0) continue;
-        if (first) v0 = v[i], first = false;
-        uniform = uniform && v[i] == v0;
-    }
+    for (Index b : grid.activeBlocks())
+        for (Index i = b * Grid<dim>::NodesPerBlock; i < (b + 1) * Grid<dim>::NodesPerBlock; ++i) {
+            if (grid.mass[i] <= 0) continue;
+            if (first) v0 = v[i], first = false;
+            uniform = uniform && v[i] == v0;
+        }
     return uniform;
 }
 

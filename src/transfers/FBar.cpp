@@ -12,16 +12,15 @@ void FBar<dim>::apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>
                       const BlockSort<dim>& sort, double dt) {
     const Index n = static_cast<Index>(p.size());
     weighted_.resize(n);
-    nodal_.resize(g.numNodes());
+    if (nodal_.size() != g.numNodes()) nodal_.reset(g.numNodes());
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
     for (Index i = 0; i < n; ++i)
         weighted_[i] = p.mass[i] * (Mat<dim>::Identity() + dt * p.L[i]).determinant();
+    g.forEachNode(g.activeBlocks(), [this](Index k) { nodal_[k] = 0.0; });
     transfer.scatterScalar(weighted_, nodal_, sort);
     if (foldNodal_) foldNodal_(nodal_); // periodic faces: images onto owners
-    const Index nodes = g.numNodes();
-#pragma omp parallel for if (worthThreads(nodes)) schedule(static)
-    for (Index k = 0; k < nodes; ++k)
-        nodal_[k] = g.mass[k] > 0.0 ? nodal_[k] / g.mass[k] : 0.0;
+    g.forEachNode(g.activeBlocks(),
+                  [&](Index k) { nodal_[k] = g.mass[k] > 0.0 ? nodal_[k] / g.mass[k] : 0.0; });
     transfer.gatherScalar(nodal_, average_);
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
     for (Index i = 0; i < n; ++i) {

@@ -39,14 +39,14 @@ public:
 
     /// On a periodic lattice: `fold(q)` folds a nodal scalar's image nodes onto their owners
     /// (BoundaryConditions::foldField), set once at set-up.
-    void setNodalFold(std::function<void(std::vector<double>&)> fold) {
+    void setNodalFold(std::function<void(NodeArray<double>&)> fold) {
         foldNodal_ = std::move(fold);
     }
 
 private:
-    std::function<void(std::vector<double>&)> foldNodal_;
+    std::function<void(NodeArray<double>&)> foldNodal_;
     std::vector<double> weighted_; ///< m_p ΔJ_p
-    std::vector<double> nodal_;    ///< Σ_p w_ip m_p ΔJ_p, then ΔJ_i
+    NodeArray<double> nodal_;      ///< Σ_p w_ip m_p ΔJ_p, then ΔJ_i
     std::vector<double> average_;  ///< ΔJ̄_p
 };
 

@@ -16,10 +16,10 @@ namespace {
 template <int dim, class K, bool Affine> class TransferImpl final : public Transfer<dim> {
     static constexpr int W = K::Width;
 
-    /// Kernel data of one particle: first stencil node, 1D weights and derivatives per axis,
-    /// and the particle's offset from the first node in cell units.
+    /// Kernel data of one particle: coordinates of the first stencil node, 1D weights and
+    /// derivatives per axis, and the particle's offset from the first node in cell units.
     struct Stencil {
-        Index node0;
+        int base[dim];
         double w[dim][W];
         double dw[dim][W];
         Vec<dim> fx;
@@ -29,7 +29,7 @@ public:
     TransferImpl(K kernel, double ratio) : kernel_(kernel), ratio_(ratio) {}
 
     void computeWeights(const Particles<dim>& p, const Grid<dim>& g) override {
-        if (!strided_) buildOffsets(g);
+        grid_ = &g;
         const Index n = static_cast<Index>(p.size());
         st_.resize(n);
         const Vec<dim> origin = g.origin();
@@ -38,13 +38,10 @@ public:
         for (Index i = 0; i < n; ++i) {
             Stencil& s = st_[i];
             const Vec<dim> xh = (p.x[i] - origin) * invH;
-            Index node0 = 0;
             for (int d = 0; d < dim; ++d) {
-                const int base = kernel_.eval(xh[d], s.w[d], s.dw[d]);
-                s.fx[d] = xh[d] - base;
-                node0 += static_cast<Index>(base) * g.stride(d);
+                s.base[d] = kernel_.eval(xh[d], s.w[d], s.dw[d]);
+                s.fx[d] = xh[d] - s.base[d];
             }
-            s.node0 = node0;
         }
     }
 
@@ -68,9 +65,8 @@ public:
             });
     }
 
-    void scatterScalar(const std::vector<double>& q, std::vector<double>& out,
+    void scatterScalar(const std::vector<double>& q, NodeArray<double>& out,
                        const BlockSort<dim>& sort) const override {
-        std::fill(out.begin(), out.end(), 0.0);
         const auto& order = sort.order();
         for (int colour = 0; colour < BlockSort<dim>::NumColours; ++colour) {
             const auto& blocks = sort.blocksOfColour(colour);
@@ -86,7 +82,7 @@ public:
         }
     }
 
-    void gatherScalar(const std::vector<double>& q, std::vector<double>& out) const override {
+    void gatherScalar(const NodeArray<double>& q, std::vector<double>& out) const override {
         const Index n = static_cast<Index>(st_.size());
         out.resize(n);
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
@@ -122,10 +118,12 @@ public:
     }
 
 private:
-    void buildOffsets(const Grid<dim>& g) {
-        sy_ = g.stride(1);
-        sz_ = dim == 3 ? g.stride(dim - 1) : 0;
-        strided_ = true;
+    /// Node-index offsets of the stencil along each axis: node (a, b, c) of the stencil is
+    /// o[0][a] + o[1][b] + o[2][c] (Grid::axisOffset).
+    inline void offsets(const Stencil& s, Index (&o)[dim][W]) const {
+        for (int d = 0; d < dim; ++d)
+            for (int a = 0; a < W; ++a)
+                o[d][a] = grid_->axisOffset(d, s.base[d] + a);
     }
 
     /// 3D P2G of one particle with the sums factored per x-row of the stencil: with
@@ -134,10 +132,12 @@ private:
     template <bool Momentum, bool Stress>
     inline void scatter3(const Stencil& s, Grid<dim>& g, double m, const Vec<dim>& mv,
                          const Mat<dim>& mC, const Mat<dim>& S) const {
+        Index o[dim][W];
+        offsets(s, o);
         for (int c = 0; c < W; ++c) {
             const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
             for (int b = 0; b < W; ++b) {
-                const Index row = s.node0 + b * sy_ + c * sz_;
+                const Index row = o[1][b] + o[2][c];
                 const double wyz = s.w[1][b] * wz;
                 const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
                 const double oy = b - s.fx[1];
@@ -148,7 +148,7 @@ private:
                 const Vec<dim> u = wyz * S.col(0);
                 const Vec<dim> v = dyz * S.col(1) + wdz * S.col(2);
                 for (int a = 0; a < W; ++a) {
-                    const Index node = row + a;
+                    const Index node = row + o[0][a];
                     const double wx = s.w[0][a];
                     if constexpr (Momentum) {
                         const double wgt = wx * wyz;
@@ -169,21 +169,23 @@ private:
     template <bool Grad, bool Flip>
     inline void gather3(const Stencil& s, const Grid<dim>& g, Vec<dim>& vPic, Vec<dim>& dv,
                         Mat<dim>& B, Mat<dim>& L) const {
+        Index o[dim][W];
+        offsets(s, o);
         Vec<dim> b0 = Vec<dim>::Zero(), b1 = Vec<dim>::Zero(), b2 = Vec<dim>::Zero();
         for (int c = 0; c < W; ++c) {
             const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
             for (int b = 0; b < W; ++b) {
-                const Index row = s.node0 + b * sy_ + c * sz_;
+                const Index row = o[1][b] + o[2][c];
                 const double wyz = s.w[1][b] * wz;
                 const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
                 const double oy = b - s.fx[1];
                 Vec<dim> r0 = Vec<dim>::Zero(), r1 = Vec<dim>::Zero(), r2 = Vec<dim>::Zero();
                 for (int a = 0; a < W; ++a) {
-                    const Vec<dim>& vi = g.v[row + a];
+                    const Vec<dim>& vi = g.v[row + o[0][a]];
                     r0 += s.w[0][a] * vi;
                     if constexpr (Affine) r1 += (a * s.w[0][a]) * vi;
                     if constexpr (Grad) r2 += s.dw[0][a] * vi;
-                    if constexpr (Flip) dv += (s.w[0][a] * wyz) * (vi - g.vOld[row + a]);
+                    if constexpr (Flip) dv += (s.w[0][a] * wyz) * (vi - g.vOld[row + o[0][a]]);
                 }
                 vPic += wyz * r0;
                 if constexpr (Affine) {
@@ -209,24 +211,26 @@ private:
     /// Visit the stencil of one particle as nested loops (x fastest):
     /// fn(node, w_ip, ∇w_ip·h, (x_i - x_p)/h).
     template <class Fn> inline void forStencil(const Stencil& s, Fn&& fn) const {
+        Index o[dim][W];
+        offsets(s, o);
         if constexpr (dim == 2) {
             for (int b = 0; b < W; ++b) {
-                const Index row = s.node0 + b * sy_;
+                const Index row = o[1][b];
                 const double wy = s.w[1][b], dy = s.dw[1][b], oy = b - s.fx[1];
                 for (int a = 0; a < W; ++a)
-                    fn(row + a, s.w[0][a] * wy, Vec<dim>(s.dw[0][a] * wy, s.w[0][a] * dy),
+                    fn(row + o[0][a], s.w[0][a] * wy, Vec<dim>(s.dw[0][a] * wy, s.w[0][a] * dy),
                        Vec<dim>(a - s.fx[0], oy));
             }
         } else {
             for (int c = 0; c < W; ++c) {
                 const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
                 for (int b = 0; b < W; ++b) {
-                    const Index row = s.node0 + b * sy_ + c * sz_;
+                    const Index row = o[1][b] + o[2][c];
                     const double wyz = s.w[1][b] * wz, dyz = s.dw[1][b] * wz;
                     const double wdz = s.w[1][b] * dz, oy = b - s.fx[1];
                     for (int a = 0; a < W; ++a) {
                         const double wx = s.w[0][a];
-                        fn(row + a, wx * wyz, Vec<dim>(s.dw[0][a] * wyz, wx * dyz, wx * wdz),
+                        fn(row + o[0][a], wx * wyz, Vec<dim>(s.dw[0][a] * wyz, wx * dyz, wx * wdz),
                            Vec<dim>(a - s.fx[0], oy, oz));
                     }
                 }
@@ -330,8 +334,7 @@ private:
     K kernel_;
     double ratio_;
     std::vector<Stencil> st_;
-    Index sy_ = 0, sz_ = 0;
-    bool strided_ = false;
+    const Grid<dim>* grid_ = nullptr; ///< the node numbering (axisOffset) of computeWeights
 };
 
 /// APIC needs a kernel with constant inertia D_p (quadratic or cubic B-spline).

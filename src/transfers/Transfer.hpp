@@ -44,12 +44,13 @@ public:
     virtual void scatterPointForces(const std::vector<Index>& ids, const std::vector<Vec<dim>>& f,
                                     Grid<dim>& g) const = 0;
 
-    /// out_i = Σ_p w_ip q_p for a particle scalar q with this step's weights; `out` (one entry
-    /// per grid node) is zeroed first. Race-free and deterministic (blocks by colour).
-    virtual void scatterScalar(const std::vector<double>& q, std::vector<double>& out,
+    /// out_i += Σ_p w_ip q_p for a particle scalar q with this step's weights; `out` (a node
+    /// field) must be zero on the active blocks (Grid::activeBlocks) on entry. Race-free and
+    /// deterministic (blocks by colour).
+    virtual void scatterScalar(const std::vector<double>& q, NodeArray<double>& out,
                                const BlockSort<dim>& s) const = 0;
     /// out_p = Σ_i w_ip q_i for a nodal scalar q with this step's weights.
-    virtual void gatherScalar(const std::vector<double>& q, std::vector<double>& out) const = 0;
+    virtual void gatherScalar(const NodeArray<double>& q, std::vector<double>& out) const = 0;
 
     /// L_p = Σ_i v_i ⊗ ∇w_ip from the P2G velocity g.vOld (USF) [002 Eq. 75].
     virtual void velocityGradient(Particles<dim>& p, const Grid<dim>& g) = 0;

@@ -35,12 +35,7 @@ template <int dim> struct Scene {
 const std::string box2D = "bounds: {min: [-0.1, 0], max: [0.1, 0.2]}\ncellSize: 0.025\n";
 
 template <int dim> IVec<dim> coordOf(const Grid<dim>& g, Index k) {
-    IVec<dim> c;
-    for (int d = 0; d < dim; ++d) {
-        c[d] = static_cast<int>(k % g.nodes()[d]);
-        k /= g.nodes()[d];
-    }
-    return c;
+    return g.nodeCoord(k);
 }
 
 /// Index of the node nearest to x.
@@ -230,7 +225,7 @@ template <int dim>
 void legacyApply(Grid<dim>& grid, const std::vector<FaceCondition>& faces, bool recordReactions,
                  double dt, const Vec<dim>& gravity, std::array<Vec<dim>, 2 * dim>& reactions,
                  std::vector<unsigned char>& contact) {
-    std::vector<Vec<dim>>& vel = recordReactions ? grid.v : grid.vOld;
+    NodeArray<Vec<dim>>& vel = recordReactions ? grid.v : grid.vOld;
     std::vector<char> touched(grid.numNodes(), 0);
     for (int f = 0; f < Grid<dim>::NumFaces; ++f) {
         const FaceCondition& fc = faces[f];

@@ -7,10 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <random>
 #include <set>
 #include <string>
+#include <sys/mman.h>
+#include <unistd.h>
 #include <vector>
 
 namespace mpm {
@@ -22,14 +25,52 @@ Dictionary parse(const std::string& text) {
 
 using test::catchInputError;
 
-/// Integer coordinates of node k (x fastest).
+/// Pages of [p, p + bytes) wholly inside the range that are resident in memory (mincore).
+Index residentPages(const void* p, std::size_t bytes) {
+    const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const auto begin = reinterpret_cast<std::uintptr_t>(p);
+    const std::uintptr_t first = (begin + page - 1) / page * page,
+                         last = (begin + bytes) / page * page;
+    if (first >= last) return 0;
+    std::vector<unsigned char> in((last - first) / page);
+    EXPECT_EQ(mincore(reinterpret_cast<void*>(first), last - first, in.data()), 0);
+    Index n = 0;
+    for (unsigned char c : in)
+        n += c & 1;
+    return n;
+}
+
 template <int dim> IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
-    IVec<dim> c;
-    for (int d = 0; d < dim; ++d) {
-        c[d] = static_cast<int>(k % g.nodes()[d]);
-        k /= g.nodes()[d];
+    return g.nodeCoord(k);
+}
+
+/// Every node of the box (padding of the last blocks excluded), x fastest.
+template <int dim> std::vector<Index> boxNodes(const Grid<dim>& g) {
+    std::vector<Index> nodes;
+    for (Index f = 0; f < g.numFileNodes(); ++f)
+        nodes.push_back(g.nodeOfFileIndex(f));
+    return nodes;
+}
+
+/// The numbering: block by block, a sum of per-axis offsets, file numbers x fastest.
+template <int dim> void checkNumbering(const Grid<dim>& g) {
+    for (Index k = 0; k < g.numNodes(); ++k) {
+        const IVec<dim> c = g.nodeCoord(k);
+        ASSERT_EQ(g.nodeIndex(c), k);
+        Index b = 0;
+        for (int d = dim - 1; d >= 0; --d)
+            b = b * g.blocks()[d] + c[d] / Grid<dim>::BlockSize;
+        ASSERT_EQ(k / Grid<dim>::NodesPerBlock, b) << "node " << k << " lies in its block";
     }
-    return c;
+    Index f = 0;
+    for (Index k : boxNodes(g)) {
+        ASSERT_GE(k, 0);
+        ASSERT_EQ(g.fileIndex(k), f++);
+        const IVec<dim> c = g.nodeCoord(k);
+        for (int d = 0; d < dim; ++d)
+            ASSERT_LT(c[d], g.nodes()[d]);
+    }
+    EXPECT_EQ(g.nodeOfFileIndex(g.numFileNodes()), -1);
 }
 
 TEST(Grid, NodeCountsAndOriginWithPadding2D) {
@@ -39,13 +80,11 @@ TEST(Grid, NodeCountsAndOriginWithPadding2D) {
     EXPECT_DOUBLE_EQ(g.invH(), 4.0);
     EXPECT_EQ(g.nodes()[0], 4 + 1 + 2 * P);
     EXPECT_EQ(g.nodes()[1], 8 + 1 + 2 * P);
-    EXPECT_EQ(g.numNodes(), Index(g.nodes()[0]) * g.nodes()[1]);
+    EXPECT_EQ(g.numFileNodes(), Index(g.nodes()[0]) * g.nodes()[1]);
     EXPECT_DOUBLE_EQ(g.origin()[0], -P * 0.25);
     EXPECT_DOUBLE_EQ(g.origin()[1], -1.0 - P * 0.25);
     EXPECT_DOUBLE_EQ(g.hi()[0], 1.0);
     EXPECT_DOUBLE_EQ(g.hi()[1], 1.0);
-    EXPECT_EQ(g.stride(0), 1);
-    EXPECT_EQ(g.stride(1), g.nodes()[0]);
     // Box corners are nodes Pad and n - 1 - Pad.
     EXPECT_TRUE(g.nodePosition(IVec<2>(P, P)).isApprox(g.lo()));
     EXPECT_TRUE(
@@ -53,10 +92,10 @@ TEST(Grid, NodeCountsAndOriginWithPadding2D) {
     EXPECT_EQ(g.blocks()[0], (g.nodes()[0] + 3) / 4);
     EXPECT_EQ(g.blocks()[1], (g.nodes()[1] + 3) / 4);
     EXPECT_EQ(g.numBlocks(), Index(g.blocks()[0]) * g.blocks()[1]);
-    EXPECT_EQ(g.mass.size(), static_cast<std::size_t>(g.numNodes()));
-    EXPECT_EQ(g.v.size(), static_cast<std::size_t>(g.numNodes()));
-    for (Index k = 0; k < g.numNodes(); ++k)
-        ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
+    EXPECT_EQ(g.numNodes(), g.numBlocks() * 16);
+    EXPECT_EQ(g.mass.size(), g.numNodes());
+    EXPECT_EQ(g.v.size(), g.numNodes());
+    checkNumbering(g);
 }
 
 TEST(Grid, NodeCountsAndOriginWithPadding3D) {
@@ -65,12 +104,11 @@ TEST(Grid, NodeCountsAndOriginWithPadding3D) {
     EXPECT_EQ(g.nodes()[0], 5 + 1 + 2 * P);
     EXPECT_EQ(g.nodes()[1], 10 + 1 + 2 * P);
     EXPECT_EQ(g.nodes()[2], 15 + 1 + 2 * P);
-    EXPECT_EQ(g.stride(2), Index(g.nodes()[0]) * g.nodes()[1]);
+    EXPECT_EQ(g.numNodes(), g.numBlocks() * 64);
     for (int d = 0; d < 3; ++d)
         EXPECT_NEAR(g.origin()[d], -P * 0.1, 1e-15);
     EXPECT_NEAR(g.hi()[2], 1.5, 1e-15);
-    for (Index k = 0; k < g.numNodes(); ++k)
-        ASSERT_EQ(g.nodeIndex(nodeCoord(g, k)), k);
+    checkNumbering(g);
 }
 
 TEST(Grid, BlockOfAndBlockCoordAgree) {
@@ -122,7 +160,7 @@ TEST(Grid, FaceNodeLists) {
         }
         // And no node on or beyond the face is missing.
         Index onOrBeyond = 0;
-        for (Index k = 0; k < g.numNodes(); ++k) {
+        for (Index k : boxNodes(g)) {
             const double x = g.nodePosition(nodeCoord(g, k))[axis];
             if (f % 2 == 0 ? x <= faceCoord + 1e-12 : x >= faceCoord - 1e-12) ++onOrBeyond;
         }
@@ -130,6 +168,43 @@ TEST(Grid, FaceNodeLists) {
     }
     EXPECT_EQ(Grid<3>::faceName(0), "xMin");
     EXPECT_EQ(Grid<3>::faceName(5), "zMax");
+}
+
+TEST(Grid, ForEachNodeVisitsTheBoxNodesOfTheBlocks) {
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 0.5, 0.75]}\ncellSize: 0.125\n"));
+    std::vector<Index> all(static_cast<std::size_t>(g.numBlocks()));
+    for (Index b = 0; b < g.numBlocks(); ++b)
+        all[b] = b;
+    std::vector<int> seen(g.numNodes(), 0);
+    g.forEachNode(all, [&](Index k) { ++seen[k]; });
+    std::vector<int> expected(g.numNodes(), 0);
+    for (Index k : boxNodes(g))
+        expected[k] = 1;
+    EXPECT_EQ(seen, expected);
+}
+
+TEST(Grid, ActivateZeroesTheLastBlocksAndReleasesThoseLeft) {
+    Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [4, 1, 1]}\ncellSize: 0.0625\n"));
+    constexpr Index B = Grid<3>::NodesPerBlock;
+    std::vector<Index> first(32), second{40, 41};
+    for (Index b = 0; b < 32; ++b)
+        first[b] = b;
+    g.activate(std::vector<Index>(first));
+    for (Index b : first)
+        for (Index k = b * B; k < (b + 1) * B; ++k) {
+            g.mass[k] = 1.0;
+            g.v[k] = Vec<3>(1, 2, 3);
+        }
+    g.activate(std::vector<Index>(second));
+    EXPECT_EQ(g.activeBlocks(), second);
+    // The pages wholly inside the blocks left are given back (not resident; a read would map
+    // the zero page), and every node of them reads zero.
+    EXPECT_EQ(residentPages(g.mass.data(), 32 * B * sizeof(double)), 0);
+    EXPECT_EQ(residentPages(g.v.data(), 32 * B * sizeof(Vec<3>)), 0);
+    for (Index k = 0; k < 42 * B; ++k) {
+        ASSERT_EQ(g.mass[k], 0.0) << k;
+        ASSERT_EQ(g.v[k], Vec<3>::Zero()) << k;
+    }
 }
 
 TEST(Grid, CellSizeNotDividingBoxIsAnError) {

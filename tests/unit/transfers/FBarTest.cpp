@@ -53,6 +53,7 @@ template <class Fn> struct Block {
                     p.L[i] = gradient(i, x);
                 }
         EXPECT_EQ(sort.update(p, grid), -1);
+        grid.activate(std::vector<Index>(sort.activeNodeBlocks()));
         transfer->computeWeights(p, grid);
         transfer->scatter(p, grid, sort, false);
     }

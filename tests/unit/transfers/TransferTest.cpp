@@ -113,12 +113,7 @@ template <int dim> void gridVelocityFromMomentum(Grid<dim>& g) {
 }
 
 template <int dim> Vec<dim> nodePos(const Grid<dim>& g, Index k) {
-    IVec<dim> c;
-    for (int d = 0; d < dim; ++d) {
-        c[d] = static_cast<int>(k % g.nodes()[d]);
-        k /= g.nodes()[d];
-    }
-    return g.nodePosition(c);
+    return g.nodePosition(g.nodeCoord(k));
 }
 
 template <int dim> Vec3 to3(const Vec<dim>& a) {
@@ -532,16 +527,16 @@ double maxNorm(const std::vector<double>& a) {
     return m;
 }
 
-template <class V> double maxDiff(const std::vector<V>& a, const std::vector<V>& b) {
+template <class V> double maxDiff(const NodeArray<V>& a, const std::vector<V>& b) {
     double m = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
+    for (Index i = 0; i < a.size(); ++i)
         m = std::max(m, std::sqrt(double((a[i] - b[i]).squaredNorm())));
     return m;
 }
 
-double maxDiff(const std::vector<double>& a, const std::vector<double>& b) {
+double maxDiff(const NodeArray<double>& a, const std::vector<double>& b) {
     double m = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
+    for (Index i = 0; i < a.size(); ++i)
         m = std::max(m, std::fabs(a[i] - b[i]));
     return m;
 }
