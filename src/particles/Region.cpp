@@ -123,14 +123,30 @@ private:
     double radius_ = 0.0;
 };
 
-/// Simple polygon (2D only) with vertices v_0 .. v_{n-1} in either orientation.
-/// contains: even-odd rule (a horizontal ray from x crosses the boundary an odd number of times).
-/// Volume (area) by the shoelace formula A = |sum_i (x_i y_{i+1} - x_{i+1} y_i)| / 2.
+/// Simple polygon with vertices v_0 .. v_{n-1} in either orientation; in 3D a prism, the
+/// polygon drawn in the plane of the two other axes (in increasing axis order: x–z for
+/// `extrude: {axis: y, ...}`) and extruded between `min` and `max` along `axis`.
+/// contains: even-odd rule (a ray from x crosses the boundary an odd number of times).
+/// Volume: the shoelace area A = |sum_i (x_i y_{i+1} - x_{i+1} y_i)| / 2, times max - min in 3D.
 template <int dim> class PolygonRegion : public Region<dim> {
 public:
     explicit PolygonRegion(const Dictionary& dict) {
-        if constexpr (dim != 2) {
-            dict.error("type", "'polygon' is 2D only; use box, sphere or cylinder in 3D");
+        double length = 1.0;
+        if constexpr (dim == 3) {
+            if (!dict.has("extrude"))
+                dict.error("extrude", "a 3D polygon is a prism: give extrude: {axis: x|y|z, "
+                                      "min: a, max: b} (the vertices lie in the other two axes)");
+            const Dictionary e = dict.subDict("extrude");
+            const std::string a = e.getWord("axis", {"x", "y", "z"});
+            axis_ = a[0] - 'x';
+            along_[0] = e.getScalar("min");
+            along_[1] = e.getScalar("max");
+            e.checkUnknownKeys();
+            if (!(along_[1] > along_[0])) e.error("max", "max must be greater than min");
+            length = along_[1] - along_[0];
+            int k = 0;
+            for (int d = 0; d < 3; ++d)
+                if (d != axis_) plane_[k++] = d;
         }
         const std::vector<std::vector<double>> list = dict.vectorList("vertices", 2);
         if (list.size() < 3) dict.error("vertices", "a polygon needs at least 3 vertices");
@@ -150,32 +166,43 @@ public:
             dict.error("vertices", "the polygon has zero area");
         }
         for (int d = 0; d < 2; ++d) {
-            lo_[d] = box.min()[d];
-            hi_[d] = box.max()[d];
+            lo_[plane_[d]] = box.min()[d];
+            hi_[plane_[d]] = box.max()[d];
         }
+        if constexpr (dim == 3) {
+            lo_[axis_] = along_[0];
+            hi_[axis_] = along_[1];
+        }
+        volume_ = area_ * length;
         dict.checkUnknownKeys();
     }
 
     bool contains(const Vec<dim>& x) const override {
+        if constexpr (dim == 3)
+            if (!(x[axis_] >= along_[0] && x[axis_] <= along_[1])) return false;
+        const double u = x[plane_[0]], w = x[plane_[1]];
         bool inside = false;
         for (std::size_t i = 0, j = vertices_.size() - 1; i < vertices_.size(); j = i++) {
             const Eigen::Vector2d& a = vertices_[i];
             const Eigen::Vector2d& b = vertices_[j];
-            if ((a.y() > x[1]) != (b.y() > x[1])) {
-                const double xCross = a.x() + (x[1] - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
-                if (x[0] < xCross) inside = !inside;
+            if ((a.y() > w) != (b.y() > w)) {
+                const double uCross = a.x() + (w - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+                if (u < uCross) inside = !inside;
             }
         }
         return inside;
     }
     Eigen::AlignedBox<double, dim> bounds() const override { return {lo_, hi_}; }
-    double volume() const override { return area_; }
+    double volume() const override { return volume_; }
 
 private:
     std::vector<Eigen::Vector2d> vertices_;
+    int axis_ = 2;          ///< extrusion axis (3D)
+    int plane_[2] = {0, 1}; ///< the axes of the vertices' coordinates
+    double along_[2] = {0.0, 0.0};
     Vec<dim> lo_ = Vec<dim>::Zero();
     Vec<dim> hi_ = Vec<dim>::Zero();
-    double area_ = 0.0;
+    double area_ = 0.0, volume_ = 0.0;
 };
 
 MPM_REGISTER(Registry<Region<2>>, BoxRegion<2>, "box");

@@ -19,7 +19,9 @@ namespace mpm {
 ///     type: disk      centre: [x, y]     radius: r                 (2D; `sphere` in 3D)
 ///     type: sphere    centre: [x, y, z]  radius: r                 (3D; `disk` in 2D)
 ///     type: cylinder  p1: [x, y, z]  p2: [x, y, z]  radius: r      (3D only; axis p1 -> p2)
-///     type: polygon   vertices: [[x, y], [x, y], ...]              (2D only; >= 3 vertices)
+///     type: polygon   vertices: [[x, y], [x, y], ...]              (>= 3 vertices; in 3D a
+///                     extrude: {axis: y, min: a, max: b}          prism: vertices in the
+///                                                                 plane of the other axes)
 ///
 /// A name valid only in the other dimension is an InputError saying what to use instead.
 template <int dim> class Region {

@@ -129,6 +129,33 @@ TEST(RegionTest, PolygonAreaMatchesSampling) {
     EXPECT_DOUBLE_EQ(r->volume(), 21.0);
 }
 
+TEST(RegionTest, PrismIsThePolygonExtrudedAlongItsAxis) {
+    // Triangle (0,0), (2,0), (0,1) in the x–z plane, extruded over y ∈ [1, 4]: V = 1 × 3.
+    const auto r = makeRegion<3>("type: polygon\nvertices: [[0, 0], [2, 0], [0, 1]]\n"
+                                 "extrude: {axis: y, min: 1, max: 4}\n");
+    EXPECT_DOUBLE_EQ(r->volume(), 3.0);
+    EXPECT_TRUE(r->bounds().min().isApprox(Vec3(0, 1, 0)));
+    EXPECT_TRUE(r->bounds().max().isApprox(Vec3(2, 4, 1)));
+    EXPECT_TRUE(r->contains(Vec3(0.5, 2.0, 0.25)));
+    EXPECT_FALSE(r->contains(Vec3(0.5, 0.5, 0.25))); // below min along y
+    EXPECT_FALSE(r->contains(Vec3(0.5, 4.5, 0.25))); // above max
+    EXPECT_FALSE(r->contains(Vec3(1.5, 2.0, 0.5)));  // beyond the hypotenuse x/2 + z = 1
+    // Axis x: the vertices are (y, z).
+    const auto q = makeRegion<3>("type: polygon\nvertices: [[0, 0], [2, 0], [0, 1]]\n"
+                                 "extrude: {axis: x, min: 0, max: 1}\n");
+    EXPECT_TRUE(q->contains(Vec3(0.5, 1.0, 0.25)));
+    EXPECT_FALSE(q->contains(Vec3(0.5, 0.25, 1.0)));
+    // Lattice count approximates the volume.
+    int inside = 0;
+    const int n = 60;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k)
+                inside += r->contains(
+                    Vec3(2.0 * (i + 0.5) / n, 1.0 + 3.0 * (j + 0.5) / n, (k + 0.5) / n));
+    EXPECT_NEAR(inside * 6.0 / (n * n * n), 3.0, 0.03);
+}
+
 TEST(RegionTest, Errors) {
     // Names valid only in the other dimension say what to use instead.
     try {
@@ -149,7 +176,18 @@ TEST(RegionTest, Errors) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("box"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(makeRegion<3>("type: polygon\nvertices: [[0, 0], [1, 0], [0, 1]]\n"), InputError);
+    try { // a 3D polygon needs its extrusion
+        makeRegion<3>("type: polygon\nvertices: [[0, 0], [1, 0], [0, 1]]\n");
+        FAIL() << "3D polygon without extrude accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("extrude"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(makeRegion<3>("type: polygon\nvertices: [[0, 0], [1, 0], [0, 1]]\n"
+                               "extrude: {axis: w, min: 0, max: 1}\n"),
+                 InputError);
+    EXPECT_THROW(makeRegion<3>("type: polygon\nvertices: [[0, 0], [1, 0], [0, 1]]\n"
+                               "extrude: {axis: y, min: 1, max: 1}\n"),
+                 InputError);
 
     EXPECT_THROW(makeRegion<3>("type: sphere\ncentre: [0, 0, 0]\nradius: -1\n"), InputError);
     EXPECT_THROW(makeRegion<2>("type: disk\ncentre: [0, 0]\nradius: 0\n"), InputError);
