@@ -238,6 +238,50 @@ template <int dim> void BoundaryConditions<dim>::assignNodes(const Dictionary* f
         p.nodes = std::move(owners[q]);
         p.owners = static_cast<Index>(p.nodes.size());
         p.nodes.insert(p.nodes.end(), images[q].begin(), images[q].end());
+        groupByBlock(p);
+    }
+}
+
+template <int dim> void BoundaryConditions<dim>::groupByBlock(Patch& p) const {
+    p.byBlock.clear(), p.blocks.clear(), p.start.clear();
+    auto group = [&](Index first, Index last) {
+        std::vector<std::pair<Index, Index>> keyed; // (block, node), stable by block
+        for (Index k = first; k < last; ++k)
+            keyed.emplace_back(p.nodes[k] / Grid<dim>::NodesPerBlock, p.nodes[k]);
+        std::stable_sort(keyed.begin(), keyed.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [block, node] : keyed) {
+            if (p.blocks.empty() || p.blocks.back() != block ||
+                static_cast<Index>(p.blocks.size()) == p.ownerBlocks) {
+                p.blocks.push_back(block);
+                p.start.push_back(static_cast<Index>(p.byBlock.size()));
+            }
+            p.byBlock.push_back(node);
+        }
+    };
+    p.ownerBlocks = -1;
+    group(0, p.owners);
+    p.ownerBlocks = static_cast<Index>(p.blocks.size());
+    group(p.owners, static_cast<Index>(p.nodes.size()));
+    p.start.push_back(static_cast<Index>(p.byBlock.size()));
+}
+
+template <int dim> void BoundaryConditions<dim>::selectActive(const Grid<dim>& g) {
+    for (Face& face : faces_) {
+        if (face.periodic) continue;
+        for (Patch& p : face.patches) {
+            for (Index i : p.live) // nodes the material left keep no contact
+                if (!g.isActive(i / Grid<dim>::NodesPerBlock)) contact_[i] = 0;
+            p.live.clear();
+            const Index nb = static_cast<Index>(p.blocks.size());
+            for (Index k = 0; k < nb; ++k) {
+                if (k == p.ownerBlocks) p.liveOwners = static_cast<Index>(p.live.size());
+                if (g.isActive(p.blocks[k]))
+                    p.live.insert(p.live.end(), p.byBlock.begin() + p.start[k],
+                                  p.byBlock.begin() + p.start[k + 1]);
+            }
+            if (p.ownerBlocks == nb) p.liveOwners = static_cast<Index>(p.live.size());
+        }
     }
 }
 
@@ -261,12 +305,12 @@ void BoundaryConditions<dim>::constrain(const Grid<dim>& g, NodeArray<Vec<dim>>&
             const Patch& p = face.patches[k];
             const BoundaryCondition<dim>& condition = governing(face, k, t);
             if (!condition.unilateral()) {
-                condition.constrain({&p.nodes, p.owners}, normal, g.mass, v, t);
+                condition.constrain({&p.live, p.liveOwners}, normal, g.mass, v, t);
                 continue;
             }
             const unsigned bit = 1u << normal.axis;
             const double wn = condition.wallNormalVelocity(normal, t);
-            for (Index i : p.nodes)
+            for (Index i : p.live)
                 if (g.mass[i] != 0 && (contact_[i] & bit)) v[i][normal.axis] = wn;
         }
     }
@@ -293,6 +337,13 @@ void BoundaryConditions<dim>::setWallContact(const std::vector<std::pair<Index, 
         MPM_ASSERT(node >= 0 && node < static_cast<Index>(contact_.size()));
         contact_[node] = static_cast<unsigned char>(axes);
     }
+    // The next selectActive clears the contact of the nodes that are not active then.
+    for (Face& face : faces_)
+        for (Patch& p : face.patches) {
+            p.live.clear();
+            for (Index i : p.nodes)
+                if (contact_[i]) p.live.push_back(i);
+        }
 }
 
 template <int dim>
@@ -300,7 +351,7 @@ void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& grav
                                               double dt, Reactions& reactions) {
     for (const Face& face : faces_)
         for (const Patch& p : face.patches)
-            for (Index i : p.nodes)
+            for (Index i : p.live)
                 touched_[i] = 0;
     const NodeState<dim> state{g.mass, g.vOld, g.force};
     for (int f = 0; f < NumFaces; ++f) {
@@ -315,13 +366,13 @@ void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& grav
                 const unsigned bit = 1u << normal.axis;
                 const bool unilateral = condition.unilateral();
                 const double wn = unilateral ? condition.wallNormalVelocity(normal, t) : 0.0;
-                for (Index i : p.nodes) {
+                for (Index i : p.live) {
                     const bool pressed = unilateral && g.mass[i] != 0 &&
                                          normal.sign * (g.v[i][normal.axis] - wn) > 0;
                     contact_[i] = static_cast<unsigned char>(pressed ? contact_[i] | bit
                                                                      : contact_[i] & ~bit);
                 }
-                p.reaction = condition.constrainUpdate({&p.nodes, p.owners}, normal, state, g.v,
+                p.reaction = condition.constrainUpdate({&p.live, p.liveOwners}, normal, state, g.v,
                                                        gravity, t, dt, touched_);
                 reaction += p.reaction;
             }

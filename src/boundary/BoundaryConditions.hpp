@@ -55,6 +55,12 @@ public:
     void constrainUpdate(Grid<dim>& g, const Vec<dim>& gravity, double t, double dt,
                          Reactions& reactions);
 
+    /// Select the patch nodes in the grid's active blocks for this step's constrain and
+    /// constrainUpdate (after Grid::activate): the walls' work follows the material, not the
+    /// size of the faces. Wall contact of the nodes whose block the material left is cleared
+    /// (constrainUpdate would have found no mass there).
+    void selectActive(const Grid<dim>& g);
+
     /// Some face has a unilateral condition (at some time): wall contact is state.
     bool hasUnilateral() const { return hasUnilateral_; }
     /// Wall contact of the last constrainUpdate, as (node, axis bits) pairs in node order
@@ -118,6 +124,12 @@ private:
         double until = std::numeric_limits<double>::infinity();
         std::vector<Index> nodes; ///< owners first, then images
         Index owners = 0;
+        /// The nodes grouped by grid block (owners, then images; x fastest within a block):
+        /// the nodes of blocks[k] are byBlock[start[k] .. start[k + 1]).
+        std::vector<Index> byBlock, blocks, start;
+        Index ownerBlocks = 0;   ///< blocks[0 .. ownerBlocks) hold owners, the rest images
+        std::vector<Index> live; ///< this step's nodes in active blocks (owners first)
+        Index liveOwners = 0;
         Vec<dim> reaction = Vec<dim>::Zero();
         bool active(double t) const { return from <= t && t < until; }
     };
@@ -130,6 +142,7 @@ private:
     Patch readPatch(const Dictionary& dict, const std::string& name, int f, bool whole) const;
     Patch wordPatch(const Dictionary& parent, const std::string& key) const;
     void assignNodes(const Dictionary* faceDict, int f);
+    void groupByBlock(Patch& p) const;
     /// The condition governing patch k of face f at time t.
     const BoundaryCondition<dim>& governing(const Face& face, std::size_t k, double t) const;
 

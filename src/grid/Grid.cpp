@@ -87,6 +87,8 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
 template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
     // Blocks that stay active are zeroed in place (their pages stay committed); runs of
     // blocks the material has left are zeroed and their whole pages released.
+    for (Index b : active_)
+        stillActive_[b] = 0;
     for (Index b : blocks)
         stillActive_[b] = 1;
     auto forFields = [this](Index block, Index count, auto&& op) {
@@ -125,9 +127,7 @@ template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
         forFields(first, last + 1 - first,
                   [](auto& field, Index f, Index n) { field.release(f, n); });
     }
-    for (Index b : blocks)
-        stillActive_[b] = 0;
-    active_ = std::move(blocks);
+    active_ = std::move(blocks); // stillActive_ now flags them
 }
 
 template class Grid<2>;

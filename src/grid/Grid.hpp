@@ -140,6 +140,9 @@ public:
     const std::vector<Index>& activeBlocks() const {
         return active_;
     }
+    bool isActive(Index block) const {
+        return stillActive_[block] != 0;
+    }
 
     static std::string faceName(int f);
     /// Nodes on or outside face f (within the ghost layers): the nodes its condition acts on.
@@ -164,7 +167,7 @@ private:
         edge_; ///< per block: holds padding beyond nodes() (the last block of an axis)
     std::array<std::vector<Index>, NumFaces> faceNodes_;
     std::vector<Index> active_;
-    std::vector<char> stillActive_; ///< activate's scratch, one per block
+    std::vector<char> stillActive_; ///< per block: in active_
 };
 
 } // namespace mpm

@@ -42,6 +42,30 @@ template <class T> struct StateField {
 ///
 /// Stress and the elastic left Cauchy–Green tensor are 3×3 in 2D too: 2D scenes are plane
 /// strain, so σ_zz is carried and the return maps work in 3D principal space.
+/// Reorder buffers of Particles::permute, one array per field type.
+template <int dim> struct PermuteBuffers {
+    std::vector<Vec<dim>> vectors;
+    std::vector<Mat<dim>> matrices;
+    std::vector<Mat3> tensors; ///< unused in 3D (Mat<3> is Mat3)
+    std::vector<double> scalars;
+    std::vector<Index> indices;
+    std::vector<int> ints;
+    template <class T> std::vector<T>& of() {
+        if constexpr (std::is_same_v<T, Vec<dim>>)
+            return vectors;
+        else if constexpr (std::is_same_v<T, Mat<dim>>)
+            return matrices;
+        else if constexpr (std::is_same_v<T, Mat3>)
+            return tensors;
+        else if constexpr (std::is_same_v<T, double>)
+            return scalars;
+        else if constexpr (std::is_same_v<T, Index>)
+            return indices;
+        else
+            return ints;
+    }
+};
+
 template <int dim> struct Particles {
     std::vector<Vec<dim>> x;           ///< position [m]
     std::vector<Vec<dim>> v;           ///< velocity [m/s]
@@ -182,26 +206,24 @@ template <int dim> struct Particles {
     }
 
     /// Reorder all arrays so that new particle k is old particle order[k] (order may be shorter
-    /// than size(): the particles left out are removed). `scratch` keeps its memory between
-    /// calls (the periodic reorder then touches no fresh pages).
-    void permute(const std::vector<Index>& order, Particles& scratch) {
-        if (scratch.scalars.size() != scalars.size() || scratch.tensors.size() != tensors.size() ||
-            scratch.flags.size() != flags.size())
-            scratch = emptyLike();
+    /// than size(): the particles left out are removed). One buffer per field type is filled
+    /// and swapped with each field in turn, so a reorder costs one array of each type, not a
+    /// second copy of every field; `buffers` keeps its memory between calls (the periodic
+    /// reorder then touches no fresh pages).
+    void permute(const std::vector<Index>& order, PermuteBuffers<dim>& buffers) {
         const Index n = static_cast<Index>(order.size());
-        visitTable(
-            [&order, n](const FieldInfo&, auto& a, auto& b) {
-                b.resize(order.size());
+        forEachArray([&](auto& a) {
+            auto& b = buffers.template of<typename std::decay_t<decltype(a)>::value_type>();
+            b.resize(order.size());
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
-                for (Index j = 0; j < n; ++j)
-                    b[j] = a[order[j]];
-                a.swap(b);
-            },
-            [](const char*, auto) {}, *this, scratch);
+            for (Index j = 0; j < n; ++j)
+                b[j] = a[order[j]];
+            a.swap(b);
+        });
     }
     void permute(const std::vector<Index>& order) {
-        Particles scratch = emptyLike();
-        permute(order, scratch);
+        PermuteBuffers<dim> buffers;
+        permute(order, buffers);
     }
 
 private:

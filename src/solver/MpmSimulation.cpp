@@ -258,6 +258,7 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
     std::vector<Index> blocks = sort_.activeNodeBlocks();
     bc_.closeActiveBlocks(blocks);
     grid_.activate(std::move(blocks)); // zero, and the sparse grid follows the material
+    bc_.selectActive(grid_);
     const std::vector<Index>& activeBlocks = grid_.activeBlocks();
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]

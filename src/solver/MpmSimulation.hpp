@@ -109,7 +109,7 @@ private:
     Vec<dim> gravity_ = Vec<dim>::Zero();                 ///< g of this step: g(t + Δt/2)
     double accelerationWork_ = 0;                         ///< State::accelerationWork [J]
     Particles<dim> particles_;
-    Particles<dim> scratch_; ///< reorder buffers, kept between reorders
+    PermuteBuffers<dim> scratch_; ///< reorder buffers, kept between reorders
     std::vector<std::unique_ptr<Material<dim>>> materials_;
     std::vector<char> volumeFromRate_; ///< per material: V from Eq. 76, not det F
     std::vector<std::vector<Index>> materialParticles_;

@@ -29,7 +29,14 @@ template <int dim> struct Scene {
     Grid<dim> grid;
     BoundaryConditions<dim> bc;
     Scene(const std::string& box, const std::string& boundary)
-        : grid(parse(box)), bc(parse(box + boundary), grid) {}
+        : grid(parse(box)), bc(parse(box + boundary), grid) {
+        // Every block active: the conditions act on every face node.
+        std::vector<Index> all(static_cast<std::size_t>(grid.numBlocks()));
+        for (Index b = 0; b < grid.numBlocks(); ++b)
+            all[b] = b;
+        grid.activate(std::move(all));
+        bc.selectActive(grid);
+    }
 };
 
 const std::string box2D = "bounds: {min: [-0.1, 0], max: [0.1, 0.2]}\ncellSize: 0.025\n";
@@ -297,6 +304,11 @@ void checkLegacy(const std::string& text, const std::vector<FaceCondition>& face
     SCOPED_TRACE(text);
     Grid<dim> a(parse(text)), b(parse(text));
     BoundaryConditions<dim> bc(parse(text), a);
+    std::vector<Index> all(static_cast<std::size_t>(b.numBlocks()));
+    for (Index k = 0; k < b.numBlocks(); ++k)
+        all[k] = k;
+    b.activate(std::move(all));
+    bc.selectActive(b);
     const BoundaryConditions<dim>& bcConst = bc;
     std::vector<unsigned char> contact(a.numNodes(), 0);
     Vec<dim> gravity = Vec<dim>::Zero();
@@ -313,8 +325,10 @@ void checkLegacy(const std::string& text, const std::vector<FaceCondition>& face
             ASSERT_EQ(a.vOld[k], b.vOld[k]) << k;
             ASSERT_EQ(a.v[k], b.v[k]) << k;
         }
+        // Velocities bit for bit; the reactions sum the same terms block by block (the walls'
+        // work follows the active blocks), so they agree to rounding.
         for (int f = 0; f < 2 * dim; ++f) {
-            EXPECT_EQ(ra[f], rb[f]) << Grid<dim>::faceName(f);
+            EXPECT_LE((ra[f] - rb[f]).norm(), 1e-13 * ra[f].norm()) << Grid<dim>::faceName(f);
             EXPECT_EQ(rb[f], bc.patchReaction(f, 0));
         }
         EXPECT_NE(rb[2], Vec<dim>::Zero());

@@ -25,7 +25,14 @@ template <int dim> struct Scene {
     Grid<dim> grid;
     BoundaryConditions<dim> bc;
     Scene(const std::string& box, const std::string& boundary)
-        : grid(parse(box)), bc(parse(box + boundary), grid) {}
+        : grid(parse(box)), bc(parse(box + boundary), grid) {
+        // Every block active: the conditions act on every face node.
+        std::vector<Index> all(static_cast<std::size_t>(grid.numBlocks()));
+        for (Index b = 0; b < grid.numBlocks(); ++b)
+            all[b] = b;
+        grid.activate(std::move(all));
+        bc.selectActive(grid);
+    }
 };
 
 template <int dim> IVec<dim> coordOf(const Grid<dim>& g, Index k) {

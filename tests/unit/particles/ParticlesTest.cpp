@@ -49,7 +49,7 @@ TEST(ParticlesTest, DeclaredStateIsResizedPermutedAndCompacted) {
         p.tensor(s)[i] = Mat3::Identity() * i;
         p.flag(f)[i] = i;
     }
-    Particles<2> scratch;
+    PermuteBuffers<2> scratch;
     p.permute({3, 1, 0, 2}, scratch);
     EXPECT_EQ(p.id, (std::vector<Index>{103, 101, 100, 102}));
     EXPECT_EQ(p.scalar(r), (std::vector<double>{30, 10, 0, 20}));
