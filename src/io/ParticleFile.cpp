@@ -35,26 +35,32 @@ static_assert(sizeof(vtkTypeInt64) == sizeof(std::int64_t), "vtkTypeInt64 must b
     throw std::runtime_error("cannot read " + file.string() + ": " + why);
 }
 
-/// A contiguous double array holding `values` (copied in bulk).
+/// A contiguous double array viewing `values`.
 vtkSmartPointer<vtkDoubleArray> makeDoubleArray(const std::vector<double>& values, int components,
                                                 vtkIdType tuples) {
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
     array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(tuples);
-    if (!values.empty()) {
-        std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(double));
+    if (values.empty()) {
+        array->SetNumberOfTuples(tuples);
+    } else {
+        // Borrowed, not copied (save = 1: VTK never frees it): `values` outlives the writer,
+        // and a copy would double the memory of writing a large cloud.
+        array->SetArray(const_cast<double*>(values.data()), static_cast<vtkIdType>(values.size()),
+                        1);
     }
     return array;
 }
 
-/// A contiguous Int64 array holding `values` (copied in bulk).
+/// A contiguous Int64 array viewing `values` (borrowed like makeDoubleArray's).
 vtkSmartPointer<vtkTypeInt64Array> makeInt64Array(const std::vector<std::int64_t>& values,
                                                   int components, vtkIdType tuples) {
     auto array = vtkSmartPointer<vtkTypeInt64Array>::New();
     array->SetNumberOfComponents(components);
-    array->SetNumberOfTuples(tuples);
-    if (!values.empty()) {
-        std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(std::int64_t));
+    if (values.empty()) {
+        array->SetNumberOfTuples(tuples);
+    } else {
+        array->SetArray(reinterpret_cast<vtkTypeInt64*>(const_cast<std::int64_t*>(values.data())),
+                        static_cast<vtkIdType>(values.size()), 1);
     }
     return array;
 }
