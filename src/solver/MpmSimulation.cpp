@@ -484,6 +484,18 @@ void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const st
 template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     timer_.report(os, numParticles(), coupling_ != nullptr, !bodies_.empty());
     if (removed_ > 0) os << removed_ << " particles left through open faces and were removed\n";
+    // Memory that follows the material: the active blocks' node fields, the particles' state.
+    const double active = static_cast<double>(grid_.activeBlocks().size());
+    const double nodeBytes = sizeof(double) + 4 * sizeof(Vec<dim>);
+    double particleBytes = 0;
+    particles_.forEachField([&](const FieldInfo&, const auto& a) {
+        particleBytes += sizeof(typename std::decay_t<decltype(a)>::value_type);
+    });
+    os << std::defaultfloat << std::setprecision(4) << "Sparse grid: " << active << " of "
+       << grid_.numBlocks() << " blocks active (" << 100.0 * active / grid_.numBlocks()
+       << " %), " << active * Grid<dim>::NodesPerBlock * nodeBytes / 1048576.0
+       << " MiB of node fields (" << nodeBytes << " B per node); particle state "
+       << particleBytes << " B per particle\n";
     const double pups = timer_.updatesPerSecond(numParticles());
     os << std::defaultfloat << std::setprecision(4) << "Particle-updates per second: " << pups
        << " (" << pups / 1e6 << " M)\n";
