@@ -2,7 +2,7 @@
 # Throughput benchmark (not a test): runs each case under tests/benchmarks/ with 1 and 2
 # threads and prints particle-updates per second, peak memory and the phase breakdown.
 #
-#   tests/benchmarks/run.sh [-n RUNS] [-t "THREADS ..."] [-o DIR] [case ...]
+#   tests/benchmarks/run.sh [-n RUNS] [-t "THREADS ..."] [-o DIR] [-i] [case ...]
 #
 #   case     a folder of tests/benchmarks/ (block3D, block3DPlastic, block2D) or a path to a
 #            case folder (default: block3D)
@@ -11,6 +11,11 @@
 #   -t LIST  thread counts, space- or comma-separated (default "1 2")
 #   -o DIR   keep every run's log in DIR (<case>.t<threads>.r<k>.log, and the median run's as
 #            <case>.t<threads>.median.log, which tests/benchmarks/roofline.py reads)
+#   -i       idle guard, for a machine shared with others: each run starts once the machine
+#            has been idle (<= 0.1 CPU-seconds in 2 s), and a run during which other processes used
+#            more than 5 % of one core (busy CPU time of /proc/stat less the run's own) is
+#            discarded and run again (at most 20 times per run, 10 minutes of waiting per
+#            run; the count of discarded runs is printed)
 #
 # Each run is a fresh copy of the case, `mpmFoam -noFunctionObjects`, OMP_NUM_THREADS set;
 # other OMP_* variables pass through. Particle-updates per second is the solver's own figure
@@ -25,12 +30,14 @@ solver=${MPMFOAM_SOLVER:-$root/bin/mpmFoam}
 runs=1
 threads="1 2"
 keep=""
-usage() { sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
-while getopts "n:t:o:h" opt; do
+guard=0
+usage() { sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+while getopts "n:t:o:ih" opt; do
     case $opt in
     n) runs=$OPTARG ;;
     t) threads=${OPTARG//,/ } ;;
     o) keep=$OPTARG ;;
+    i) guard=1 ;;
     h) usage 0 ;;
     *) usage 2 >&2 ;;
     esac
@@ -53,6 +60,19 @@ for c in "${cases[@]}"; do
     [ -d "$root/tests/benchmarks/$c" ] || [ -d "$c" ] ||
         { echo "run.sh: no case '$c' (neither tests/benchmarks/$c nor a folder)" >&2; exit 2; }
 done
+# Busy CPU time of the machine so far [1/100 s]: user nice system irq softirq steal.
+busyTicks() { awk '/^cpu / { print $2 + $3 + $4 + $7 + $8 + $9 }' /proc/stat; }
+waitIdle() { # up to 10 minutes
+    local b0 b1 k
+    for ((k = 0; k < 300; ++k)); do
+        b0=$(busyTicks)
+        sleep 2
+        b1=$(busyTicks)
+        ((b1 - b0 <= 10)) && return 0 # <= 0.1 s of CPU time in 2 s
+    done
+    echo "run.sh: the machine was not idle for 10 minutes (-i)" >&2
+    exit 1
+}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 [ -n "$keep" ] && mkdir -p "$keep"
@@ -64,11 +84,25 @@ for c in "${cases[@]}"; do
     name=$(basename "$src")
     for t in $threads; do
         : >"$work/rates"
+        discarded=0
         for ((r = 1; r <= runs; ++r)); do
             rm -rf "$work/case" && cp -r "$src" "$work/case"
             log=$work/$name.t$t.r$r.log
-            OMP_NUM_THREADS=$t "$solver" -case "$work/case" -noFunctionObjects >"$log" 2>&1 ||
-                { cat "$log"; exit 1; }
+            ((guard)) && waitIdle
+            b0=$(busyTicks)
+            TIMEFORMAT='%U %S %R'
+            { time OMP_NUM_THREADS=$t "$solver" -case "$work/case" -noFunctionObjects \
+                >"$log" 2>&1 || { cat "$log"; exit 1; }; } 2>"$work/time"
+            b1=$(busyTicks)
+            if ((guard)); then
+                # Others' CPU seconds: the machine's busy time less the run's user + system.
+                if awk -v b="$(((b1 - b0)))" '{ other = b / 100 - $1 - $2; exit !(other > 0.05 * $3) }' \
+                    "$work/time"; then
+                    ((++discarded <= 20 * runs)) || { echo "run.sh: machine never idle" >&2; exit 1; }
+                    r=$((r - 1))
+                    continue
+                fi
+            fi
             rate=$(sed -n 's/^Particle-updates per second: \([^ ]*\).*/\1/p' "$log")
             peak=$(sed -n 's/^Peak memory: \([^ ]*\) MiB.*/\1/p' "$log")
             [ -n "$rate" ] || { cat "$log"; echo "run.sh: no particle-updates line" >&2; exit 1; }
@@ -80,7 +114,8 @@ for c in "${cases[@]}"; do
             NR == 1 { lo = $1 } { hi = $1; if ($2 + 0 > pk || NR == 1) pk = $2 }
             NR == int((n + 1) / 2) { med = $1; run = $3 }
             END { print med, lo, hi, pk, run }')
-        echo "== $name, OMP_NUM_THREADS=$t, $runs run(s): median run $medRun"
+        echo "== $name, OMP_NUM_THREADS=$t, $runs run(s): median run $medRun" \
+            "$( ((guard)) && echo "($discarded run(s) discarded: machine busy)")"
         sed -n '/^Phase timing/,/^Peak memory/p' "$work/$name.t$t.r$medRun.log"
         [ -n "$keep" ] && cp "$work/$name.t$t.r$medRun.log" "$keep/$name.t$t.median.log"
         summary+=("$(awk -v c="$name" -v t="$t" -v n="$runs" -v m="$med" -v l="$lo" -v h="$hi" \
