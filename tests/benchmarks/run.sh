@@ -31,7 +31,7 @@ runs=1
 threads="1 2"
 keep=""
 guard=0
-usage() { sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+usage() { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
 while getopts "n:t:o:ih" opt; do
     case $opt in
     n) runs=$OPTARG ;;
