@@ -44,6 +44,7 @@ int main(int argc, char* argv[]) {
         if (options.dryRun)
             log() << "Dry run: the case is valid and one step ran; nothing written.\n";
         sim->report(log());
+        reportPeakMemory(log());
         log() << "\nEnd\n";
     });
 }

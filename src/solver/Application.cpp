@@ -4,6 +4,7 @@
 #include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/Memory.hpp"
 
 #include <omp.h>
 #include <unistd.h>
@@ -13,6 +14,7 @@
 #include <ctime>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace mpm {
 
@@ -99,6 +101,18 @@ int Application::run(const std::function<void()>& body) const {
                   << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
     }
     return 1;
+}
+
+void reportPeakMemory(std::ostream& os) {
+    const PeakMemory peak = peakResident();
+    if (peak.bytes < 0) {
+        os << "Peak memory: unknown (neither /proc/self/status nor getrusage)\n";
+        return;
+    }
+    std::ostringstream line; // leaves the log's format flags alone
+    line << std::fixed << std::setprecision(1) << "Peak memory: " << peak.bytes / 1048576.0
+         << " MiB (" << peak.source << ")\n";
+    os << line.str();
 }
 
 ProgressMeter::ProgressMeter(const Time& time)

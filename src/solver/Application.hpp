@@ -4,6 +4,7 @@
 #include "case/Time.hpp"
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,10 @@ private:
     bool help_ = false;
     std::string badOption_;
 };
+
+/// The run's peak resident memory, `Peak memory: <X> MiB (VmHWM)` (core/Memory.hpp), printed
+/// after the phase table and the particle-updates per second.
+void reportPeakMemory(std::ostream& os);
 
 /// Progress line per write: simulated time, Δt, steps per second and ETA.
 class ProgressMeter {
