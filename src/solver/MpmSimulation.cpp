@@ -492,10 +492,9 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
         particleBytes += sizeof(typename std::decay_t<decltype(a)>::value_type);
     });
     os << std::defaultfloat << std::setprecision(4) << "Sparse grid: " << active << " of "
-       << grid_.numBlocks() << " blocks active (" << 100.0 * active / grid_.numBlocks()
-       << " %), " << active * Grid<dim>::NodesPerBlock * nodeBytes / 1048576.0
-       << " MiB of node fields (" << nodeBytes << " B per node); particle state "
-       << particleBytes << " B per particle\n";
+       << grid_.numBlocks() << " blocks active (" << 100.0 * active / grid_.numBlocks() << " %), "
+       << active * Grid<dim>::NodesPerBlock * nodeBytes / 1048576.0 << " MiB of node fields ("
+       << nodeBytes << " B per node); particle state " << particleBytes << " B per particle\n";
     const double pups = timer_.updatesPerSecond(numParticles());
     os << std::defaultfloat << std::setprecision(4) << "Particle-updates per second: " << pups
        << " (" << pups / 1e6 << " M)\n";

@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 #include "core/SymmetricEigen.hpp"
 #include "core/Types.hpp"
+#include "grid/Grid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace mpm::test {
 
@@ -87,6 +89,22 @@ inline Mat3 randomRotation(std::mt19937_64& rng) {
     Mat3 Q;
     symmetricEigen3(a + a.transpose(), lam, Q);
     return Q;
+}
+
+/// Every node of the grid's box, x fastest (the padding of the last blocks excluded).
+template <int dim> std::vector<Index> boxNodes(const Grid<dim>& g) {
+    std::vector<Index> nodes;
+    for (Index f = 0; f < g.numFileNodes(); ++f)
+        nodes.push_back(g.nodeOfFileIndex(f));
+    return nodes;
+}
+
+/// Make every block of the grid active (Grid::activate), as if material reached everywhere.
+template <int dim> void activateAll(Grid<dim>& g) {
+    std::vector<Index> all(static_cast<std::size_t>(g.numBlocks()));
+    for (Index b = 0; b < g.numBlocks(); ++b)
+        all[b] = b;
+    g.activate(std::move(all));
 }
 
 } // namespace mpm::test

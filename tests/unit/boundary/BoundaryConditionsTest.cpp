@@ -30,11 +30,7 @@ template <int dim> struct Scene {
     BoundaryConditions<dim> bc;
     Scene(const std::string& box, const std::string& boundary)
         : grid(parse(box)), bc(parse(box + boundary), grid) {
-        // Every block active: the conditions act on every face node.
-        std::vector<Index> all(static_cast<std::size_t>(grid.numBlocks()));
-        for (Index b = 0; b < grid.numBlocks(); ++b)
-            all[b] = b;
-        grid.activate(std::move(all));
+        test::activateAll(grid); // the conditions act on every face node
         bc.selectActive(grid);
     }
 };
@@ -304,10 +300,7 @@ void checkLegacy(const std::string& text, const std::vector<FaceCondition>& face
     SCOPED_TRACE(text);
     Grid<dim> a(parse(text)), b(parse(text));
     BoundaryConditions<dim> bc(parse(text), a);
-    std::vector<Index> all(static_cast<std::size_t>(b.numBlocks()));
-    for (Index k = 0; k < b.numBlocks(); ++k)
-        all[k] = k;
-    b.activate(std::move(all));
+    test::activateAll(b);
     bc.selectActive(b);
     const BoundaryConditions<dim>& bcConst = bc;
     std::vector<unsigned char> contact(a.numNodes(), 0);

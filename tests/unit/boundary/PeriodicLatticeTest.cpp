@@ -2,6 +2,7 @@
 // Periodic faces: the folded lattice is seamless for every kernel, the fold conserves mass and
 // momentum, the active blocks are closed under the image map, particles wrap across the seam,
 // and conditions on the other faces follow the owners.
+#include "TestSupport.hpp"
 #include "boundary/BoundaryConditions.hpp"
 #include "kernels/Kernels.hpp"
 #include "transfers/Transfer.hpp"
@@ -26,11 +27,7 @@ template <int dim> struct Scene {
     BoundaryConditions<dim> bc;
     Scene(const std::string& box, const std::string& boundary)
         : grid(parse(box)), bc(parse(box + boundary), grid) {
-        // Every block active: the conditions act on every face node.
-        std::vector<Index> all(static_cast<std::size_t>(grid.numBlocks()));
-        for (Index b = 0; b < grid.numBlocks(); ++b)
-            all[b] = b;
-        grid.activate(std::move(all));
+        test::activateAll(grid); // the conditions act on every face node
         bc.selectActive(grid);
     }
 };
@@ -39,13 +36,7 @@ template <int dim> IVec<dim> coordOf(const Grid<dim>& g, Index k) {
     return g.nodeCoord(k);
 }
 
-/// Every node of the box (the padding of the last blocks excluded).
-template <int dim> std::vector<Index> boxNodes(const Grid<dim>& g) {
-    std::vector<Index> nodes;
-    for (Index f = 0; f < g.numFileNodes(); ++f)
-        nodes.push_back(g.nodeOfFileIndex(f));
-    return nodes;
-}
+using test::boxNodes;
 
 template <int dim> Index blockOfNode(const Grid<dim>& g, Index k) {
     const IVec<dim> c = coordOf(g, k);

@@ -44,13 +44,7 @@ template <int dim> IVec<dim> nodeCoord(const Grid<dim>& g, Index k) {
     return g.nodeCoord(k);
 }
 
-/// Every node of the box (padding of the last blocks excluded), x fastest.
-template <int dim> std::vector<Index> boxNodes(const Grid<dim>& g) {
-    std::vector<Index> nodes;
-    for (Index f = 0; f < g.numFileNodes(); ++f)
-        nodes.push_back(g.nodeOfFileIndex(f));
-    return nodes;
-}
+using test::boxNodes;
 
 /// The numbering: block by block, a sum of per-axis offsets, file numbers x fastest.
 template <int dim> void checkNumbering(const Grid<dim>& g) {
