@@ -110,8 +110,8 @@ def phase_model(dim, plastic, sweeps, activeNodes, massNodes, plasticShare):
 CASES = {
     "block3D": dict(dim=3, plastic=False, sweeps=3.005, activeNodes=0.4091, massNodes=0.1759,
                     plasticShare=0.0),
-    "block3DPlastic": dict(dim=3, plastic=True, sweeps=2.93, activeNodes=0.4091,
-                           massNodes=0.1762, plasticShare=0.89),
+    "block3DPlastic": dict(dim=3, plastic=True, sweeps=2.967, activeNodes=0.4091,
+                           massNodes=0.1761, plasticShare=0.888),
     "block2D": dict(dim=2, plastic=False, sweeps=0.733, activeNodes=0.2781, massNodes=0.2569,
                     plasticShare=0.0),
 }

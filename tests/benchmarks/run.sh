@@ -13,7 +13,7 @@
 #            <case>.t<threads>.median.log, which tests/benchmarks/roofline.py reads)
 #   -i       idle guard, for a machine shared with others: each run starts once the machine
 #            has been idle (<= 0.1 CPU-seconds in 2 s), and a run during which other processes used
-#            more than 5 % of one core (busy CPU time of /proc/stat less the run's own) is
+#            more than 1 % of one core (busy CPU time of /proc/stat less the run's own) is
 #            discarded and run again (at most 20 times per run, 10 minutes of waiting per
 #            run; the count of discarded runs is printed)
 #
@@ -96,8 +96,10 @@ for c in "${cases[@]}"; do
             b1=$(busyTicks)
             if ((guard)); then
                 # Others' CPU seconds: the machine's busy time less the run's user + system.
-                if awk -v b="$(((b1 - b0)))" '{ other = b / 100 - $1 - $2; exit !(other > 0.05 * $3) }' \
-                    "$work/time"; then
+                other=$(awk -v b="$((b1 - b0))" 'END { printf "%.2f", b / 100 - $1 - $2 }' "$work/time")
+                wall=$(awk 'END { print $3 }' "$work/time")
+                if awk -v o="$other" -v w="$wall" 'BEGIN { exit !(o > 0.01 * w) }'; then
+                    echo "   (run $r discarded: others used $other CPU-s in $wall s)"
                     ((++discarded <= 20 * runs)) || { echo "run.sh: machine never idle" >&2; exit 1; }
                     r=$((r - 1))
                     continue
@@ -107,6 +109,7 @@ for c in "${cases[@]}"; do
             peak=$(sed -n 's/^Peak memory: \([^ ]*\) MiB.*/\1/p' "$log")
             [ -n "$rate" ] || { cat "$log"; echo "run.sh: no particle-updates line" >&2; exit 1; }
             echo "$rate ${peak:-nan} $r" >>"$work/rates"
+            ((guard)) && echo "   (run $r: $rate particle-updates/s; others used $other CPU-s)"
             [ -n "$keep" ] && cp "$log" "$keep/"
         done
         # Median run: the middle one by rate (the lower middle for an even count).

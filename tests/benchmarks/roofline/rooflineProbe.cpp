@@ -13,6 +13,7 @@
 // Memory: STREAM-like kernels over three arrays of `mib` MiB each (≫ the L3), first touched
 // by the threads that use them (static schedule):
 //   read   s += a_i                      8 B per element read
+//   write  b_i = s                       8 B (STREAM-like), 16 B with the write-allocate
 //   copy   c_i = a_i                     16 B (STREAM), 24 B with the write-allocate
 //   triad  a_i = b_i + s c_i             24 B (STREAM), 32 B with the write-allocate
 // A store to a line that is not in the cache first reads the line (write-allocate, or read for
@@ -23,7 +24,8 @@
 // Each figure is the median of `reps` timed repetitions (after one untimed warm-up), for each
 // thread count. Prints a table and one machine-readable line per thread count:
 //   ROOFLINE threads=<t> lanes=<w> gflops=<w-wide> gflops4=<4-wide> gflops1=<scalar>
-//            readGBs=<..> copyGBs=<..> copyWAGBs=<..> triadGBs=<..> triadWAGBs=<..>
+//            readGBs=<..> writeGBs=<..> writeWAGBs=<..> copyGBs=<..> copyWAGBs=<..>
+//            triadGBs=<..> triadWAGBs=<..>
 #include <omp.h>
 
 #include <algorithm>
@@ -209,7 +211,7 @@ template <int Lanes> double flops(const Options& o, int threads) {
 }
 
 struct Bandwidth {
-    double read, copy, triad; // GB/s, STREAM counting
+    double read, write, copy, triad; // GB/s, STREAM counting
 };
 
 Bandwidth bandwidth(const Options& o, int threads) {
@@ -225,7 +227,7 @@ Bandwidth bandwidth(const Options& o, int threads) {
         b[i] = 2.0;
         c[i] = 0.5;
     }
-    std::vector<double> tr, tc, tt;
+    std::vector<double> tr, tw, tc, tt;
     double sum = 0;
     const double s = 3.0;
     for (int r = 0; r <= o.reps; ++r) {
@@ -236,6 +238,13 @@ Bandwidth bandwidth(const Options& o, int threads) {
             acc += a[i]; // simd: partial sums in vector lanes (exact here: a sum of ones)
         const double dRead = omp_get_wtime() - t0;
         sum = acc;
+        double two = 2.0; // b's value, hidden from the compiler (no memset)
+        asm volatile("" : "+x"(two));
+        t0 = omp_get_wtime();
+#pragma omp parallel for num_threads(threads) schedule(static)
+        for (long i = 0; i < n; ++i)
+            b[i] = two;
+        const double dWrite = omp_get_wtime() - t0;
         t0 = omp_get_wtime();
 #pragma omp parallel for num_threads(threads) schedule(static)
         for (long i = 0; i < n; ++i)
@@ -253,6 +262,7 @@ Bandwidth bandwidth(const Options& o, int threads) {
             a[i] = (a[i] - 2.0) / 3.0;
         if (r > 0) {
             tr.push_back(8.0 * n / dRead / 1e9);
+            tw.push_back(8.0 * n / dWrite / 1e9);
             tc.push_back(16.0 * n / dCopy / 1e9);
             tt.push_back(24.0 * n / dTriad / 1e9);
         }
@@ -262,12 +272,12 @@ Bandwidth bandwidth(const Options& o, int threads) {
         }
     }
     for (long i = 0; i < n; i += 4099)
-        if (c[i] != 1.0 || a[i] != 1.0) {
-            std::fprintf(stderr, "rooflineProbe: copy/triad check failed at %ld\n", i);
+        if (c[i] != 1.0 || a[i] != 1.0 || b[i] != 2.0) {
+            std::fprintf(stderr, "rooflineProbe: write/copy/triad check failed at %ld\n", i);
             checksOk = false;
             break;
         }
-    return {median(tr), median(tc), median(tt)};
+    return {median(tr), median(tw), median(tc), median(tt)};
 }
 
 } // namespace
@@ -277,26 +287,29 @@ int main(int argc, char* argv[]) {
     std::printf("rooflineProbe: double precision, %d-wide vectors (this build), %d FMA chains, "
                 "3 arrays of %.0f MiB, median of %d repetitions\n",
                 WideLanes, Chains, o.mib, o.reps);
-    std::printf("%7s %10s %10s %10s %9s %9s %9s %9s %9s\n", "threads", "GFLOP/s", "GFLOP/s",
-                "GFLOP/s", "read", "copy", "copy+WA", "triad", "triad+WA");
+    std::printf("%7s %10s %10s %10s %9s %9s %9s %9s %9s %9s %9s\n", "threads", "GFLOP/s", "GFLOP/s",
+                "GFLOP/s", "read", "write", "write+WA", "copy", "copy+WA", "triad", "triad+WA");
     char w[16];
     std::snprintf(w, sizeof w, "%d-wide", WideLanes);
-    std::printf("%7s %10s %10s %10s %9s %9s %9s %9s %9s\n", "", w, "4-wide", "scalar", "GB/s",
-                "GB/s", "GB/s", "GB/s", "GB/s");
+    std::printf("%7s %10s %10s %10s %9s %9s %9s %9s %9s %9s %9s\n", "", w, "4-wide", "scalar",
+                "GB/s", "GB/s", "GB/s", "GB/s", "GB/s", "GB/s", "GB/s");
     std::vector<std::string> lines;
     for (int t : o.threads) {
         const double fw = flops<WideLanes>(o, t);
         const double f4 = WideLanes == 4 ? fw : flops<4>(o, t);
         const double f1 = flops<1>(o, t);
         const Bandwidth bw = bandwidth(o, t);
-        const double copyWA = bw.copy * 24.0 / 16.0, triadWA = bw.triad * 32.0 / 24.0;
-        std::printf("%7d %10.1f %10.1f %10.1f %9.1f %9.1f %9.1f %9.1f %9.1f\n", t, fw, f4, f1,
-                    bw.read, bw.copy, copyWA, bw.triad, triadWA);
+        const double writeWA = 2.0 * bw.write, copyWA = bw.copy * 24.0 / 16.0,
+                     triadWA = bw.triad * 32.0 / 24.0;
+        std::printf("%7d %10.1f %10.1f %10.1f %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f %9.1f\n", t, fw,
+                    f4, f1, bw.read, bw.write, writeWA, bw.copy, copyWA, bw.triad, triadWA);
         char line[512];
         std::snprintf(line, sizeof line,
                       "ROOFLINE threads=%d lanes=%d gflops=%.2f gflops4=%.2f gflops1=%.2f "
-                      "readGBs=%.2f copyGBs=%.2f copyWAGBs=%.2f triadGBs=%.2f triadWAGBs=%.2f",
-                      t, WideLanes, fw, f4, f1, bw.read, bw.copy, copyWA, bw.triad, triadWA);
+                      "readGBs=%.2f writeGBs=%.2f writeWAGBs=%.2f copyGBs=%.2f copyWAGBs=%.2f "
+                      "triadGBs=%.2f triadWAGBs=%.2f",
+                      t, WideLanes, fw, f4, f1, bw.read, bw.write, writeWA, bw.copy, copyWA,
+                      bw.triad, triadWA);
         lines.push_back(line);
     }
     for (const auto& l : lines)
