@@ -31,15 +31,21 @@ if "$probe" -threads 1,2 -reps 1 -mib 8 -seconds 0.01 >"$work/probe" 2>&1 &&
 else
     cat "$work/probe"; bad "rooflineProbe short run"
 fi
-for args in "-reps 0" "-threads 1,a" "-mib 0.5" "-bogus 1" "-seconds"; do
+# refused NAME ARGS COMMAND...: COMMAND ARGS must exit 2 with a "NAME: " message.
+refused() {
+    local name=$1 args=$2
+    shift 2
     # shellcheck disable=SC2086
-    "$probe" $args >"$work/err" 2>&1
-    rc=$?
-    if [ $rc -eq 2 ] && grep -q "^rooflineProbe: " "$work/err"; then
-        ok "rooflineProbe $args refused: $(head -1 "$work/err")"
+    "$@" $args >"$work/err" 2>&1
+    local rc=$?
+    if [ $rc -eq 2 ] && grep -q "^$name: " "$work/err"; then
+        ok "$name $args refused: $(grep "^$name: " "$work/err" | head -1)"
     else
-        bad "rooflineProbe $args: exit $rc"
+        bad "$name $args: exit $rc"
     fi
+}
+for args in "-reps 0" "-threads 1,a" "-mib 0.5" "-bogus 1" "-seconds"; do
+    refused rooflineProbe "$args" "$probe"
 done
 
 # 2. roofline.py: hand counts and a synthetic log.
@@ -88,14 +94,7 @@ else
     cat "$work/run"; bad "run.sh -n 3 on a small case"
 fi
 for args in "-n 0" "-t 1,x" "$work/nosuch"; do
-    # shellcheck disable=SC2086
-    bash "$root/tests/benchmarks/run.sh" $args >"$work/err" 2>&1
-    rc=$?
-    if [ $rc -eq 2 ] && grep -q "^run.sh: " "$work/err"; then
-        ok "run.sh $args refused: $(grep '^run.sh: ' "$work/err")"
-    else
-        bad "run.sh $args: exit $rc"
-    fi
+    refused run.sh "$args" bash "$root/tests/benchmarks/run.sh"
 done
 
 # 4. phaseStats.py and yieldShare.py on a 2D block at rest.
