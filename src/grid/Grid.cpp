@@ -81,16 +81,16 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
     force.reset(numNodes_);
     vOld.reset(numNodes_);
     v.reset(numNodes_);
-    stillActive_.assign(numBlocks_, 0);
+    activeFlag_.assign(numBlocks_, 0);
 }
 
 template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
     // Blocks that stay active are zeroed in place (their pages stay committed); runs of
     // blocks the material has left are zeroed and their whole pages released.
     for (Index b : active_)
-        stillActive_[b] = 0;
+        activeFlag_[b] = 0;
     for (Index b : blocks)
-        stillActive_[b] = 1;
+        activeFlag_[b] = 1;
     auto forFields = [this](Index block, Index count, auto&& op) {
         const Index first = block * NodesPerBlock, n = count * NodesPerBlock;
         op(mass, first, n);
@@ -102,7 +102,7 @@ template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
     const Index na = static_cast<Index>(active_.size());
 #pragma omp parallel for if (worthThreads(64 * na)) schedule(static)
     for (Index k = 0; k < na; ++k)
-        if (stillActive_[active_[k]])
+        if (activeFlag_[active_[k]])
             forFields(active_[k], 1, [](auto& field, Index first, Index n) {
                 std::memset(static_cast<void*>(field.data() + first), 0, n * sizeof(field[0]));
             });
@@ -111,23 +111,23 @@ template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
     constexpr Index MaxGap = 8;
     for (Index k = 0; k < na;) {
         const Index first = active_[k];
-        if (stillActive_[first]) {
+        if (activeFlag_[first]) {
             ++k;
             continue;
         }
         Index last = first;
         ++k;
-        while (k < na && !stillActive_[active_[k]] && active_[k] - last <= MaxGap) {
+        while (k < na && !activeFlag_[active_[k]] && active_[k] - last <= MaxGap) {
             bool free = true;
             for (Index c = last + 1; c < active_[k]; ++c)
-                free = free && !stillActive_[c];
+                free = free && !activeFlag_[c];
             if (!free) break;
             last = active_[k++];
         }
         forFields(first, last + 1 - first,
                   [](auto& field, Index f, Index n) { field.release(f, n); });
     }
-    active_ = std::move(blocks); // stillActive_ now flags them
+    active_ = std::move(blocks); // activeFlag_ now flags them
 }
 
 template class Grid<2>;

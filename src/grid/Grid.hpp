@@ -28,6 +28,8 @@ public:
     static constexpr int BlockSize = 4;
     static constexpr int NodesPerBlock = dim == 2 ? 16 : 64;
     static constexpr int NumFaces = 2 * dim;
+    /// Bytes of the node fields per node (mass, momentum, force, vOld, v).
+    static constexpr int BytesPerNode = sizeof(double) + 4 * sizeof(Vec<dim>);
 
     explicit Grid(const Dictionary& dict);
 
@@ -141,7 +143,7 @@ public:
         return active_;
     }
     bool isActive(Index block) const {
-        return stillActive_[block] != 0;
+        return activeFlag_[block] != 0;
     }
 
     static std::string faceName(int f);
@@ -167,7 +169,7 @@ private:
         edge_; ///< per block: holds padding beyond nodes() (the last block of an axis)
     std::array<std::vector<Index>, NumFaces> faceNodes_;
     std::vector<Index> active_;
-    std::vector<char> stillActive_; ///< per block: in active_
+    std::vector<char> activeFlag_; ///< per block: 1 if in active_
 };
 
 } // namespace mpm

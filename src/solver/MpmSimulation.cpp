@@ -486,7 +486,7 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     if (removed_ > 0) os << removed_ << " particles left through open faces and were removed\n";
     // Memory that follows the material: the active blocks' node fields, the particles' state.
     const double active = static_cast<double>(grid_.activeBlocks().size());
-    const double nodeBytes = sizeof(double) + 4 * sizeof(Vec<dim>);
+    const double nodeBytes = Grid<dim>::BytesPerNode;
     double particleBytes = 0;
     particles_.forEachField([&](const FieldInfo&, const auto& a) {
         particleBytes += sizeof(typename std::decay_t<decltype(a)>::value_type);
