@@ -81,6 +81,7 @@ template <int dim> Grid<dim>::Grid(const Dictionary& dict) {
     force.reset(numNodes_);
     vOld.reset(numNodes_);
     v.reset(numNodes_);
+    lines.reset(numNodes_);
     activeFlag_.assign(numBlocks_, 0);
 }
 
@@ -91,21 +92,25 @@ template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
         activeFlag_[b] = 0;
     for (Index b : blocks)
         activeFlag_[b] = 1;
-    auto forFields = [this](Index block, Index count, auto&& op) {
+    auto forFields = [this](Index block, Index count, auto&& op, bool withScratch) {
         const Index first = block * NodesPerBlock, n = count * NodesPerBlock;
         op(mass, first, n);
         op(momentum, first, n);
         op(force, first, n);
         op(vOld, first, n);
         op(v, first, n);
+        if (withScratch) op(lines, first, n);
     };
     const Index na = static_cast<Index>(active_.size());
 #pragma omp parallel for if (worthThreads(64 * na)) schedule(static)
     for (Index k = 0; k < na; ++k)
         if (activeFlag_[active_[k]])
-            forFields(active_[k], 1, [](auto& field, Index first, Index n) {
-                std::memset(static_cast<void*>(field.data() + first), 0, n * sizeof(field[0]));
-            });
+            forFields(
+                active_[k], 1,
+                [](auto& field, Index first, Index n) {
+                    std::memset(static_cast<void*>(field.data() + first), 0, n * sizeof(field[0]));
+                },
+                false);
     // Runs of left blocks, joined across gaps of blocks that were never active (zero already)
     // up to a few blocks long.
     constexpr Index MaxGap = 8;
@@ -124,8 +129,9 @@ template <int dim> void Grid<dim>::activate(std::vector<Index>&& blocks) {
             if (!free) break;
             last = active_[k++];
         }
-        forFields(first, last + 1 - first,
-                  [](auto& field, Index f, Index n) { field.release(f, n); });
+        forFields(
+            first, last + 1 - first, [](auto& field, Index f, Index n) { field.release(f, n); },
+            true);
     }
     active_ = std::move(blocks); // activeFlag_ now flags them
 }

@@ -22,14 +22,19 @@ namespace mpm {
 /// node fields (NodeArray) commit memory block by block where the material is: the grid is
 /// sparse (docs/sparseGrid.md). Only the active blocks, those the material's stencils reach
 /// (activate), hold non-zero values.
+/// Eight doubles in one 64-byte line: a node's packed transfer data (Grid::lines).
+struct alignas(64) NodeLine {
+    double v[8];
+};
+
 template <int dim> class Grid {
 public:
     static constexpr int Pad = 3;
     static constexpr int BlockSize = 4;
     static constexpr int NodesPerBlock = dim == 2 ? 16 : 64;
     static constexpr int NumFaces = 2 * dim;
-    /// Bytes of the node fields per node (mass, momentum, force, vOld, v).
-    static constexpr int BytesPerNode = sizeof(double) + 4 * sizeof(Vec<dim>);
+    /// Bytes of the node fields per node (mass, momentum, force, vOld, v, lines).
+    static constexpr int BytesPerNode = sizeof(double) + 4 * sizeof(Vec<dim>) + sizeof(NodeLine);
 
     explicit Grid(const Dictionary& dict);
 
@@ -158,6 +163,10 @@ public:
     NodeArray<Vec<dim>> force;
     NodeArray<Vec<dim>> vOld;
     NodeArray<Vec<dim>> v;
+    /// Scratch of the transfers, one cache line per node (P2G sums, G2P velocities): defined
+    /// only within one transfer phase, so activate does not zero it; its pages are released
+    /// with the blocks the material leaves, like the other fields'.
+    NodeArray<NodeLine> lines;
 
 private:
     double h_ = 0, invH_ = 0;

@@ -12,6 +12,23 @@ namespace mpm {
 
 namespace {
 
+/// Four doubles as one SIMD vector (GCC/Clang vector extension: one AVX register, or two SSE).
+using Double4 = double __attribute__((vector_size(32)));
+
+/// Lanes 0–3 and 4–7 of a node line.
+inline Double4 loadLow(const NodeLine& q) {
+    return *reinterpret_cast<const Double4*>(q.v);
+}
+inline Double4 loadHigh(const NodeLine& q) {
+    return *reinterpret_cast<const Double4*>(q.v + 4);
+}
+inline void storeLow(NodeLine& q, const Double4& x) {
+    *reinterpret_cast<Double4*>(q.v) = x;
+}
+inline void storeHigh(NodeLine& q, const Double4& x) {
+    *reinterpret_cast<Double4*>(q.v + 4) = x;
+}
+
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
 template <int dim, class K, bool Affine> class TransferImpl final : public Transfer<dim> {
     static constexpr int W = K::Width;
@@ -109,8 +126,7 @@ public:
         }
     }
 
-    GatherStats gather(Particles<dim>& p, const Grid<dim>& g, double dt,
-                       bool withGradient) override {
+    GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt, bool withGradient) override {
         const bool flip = !Affine && ratio_ > 0.0;
         if (withGradient)
             return flip ? gatherImpl<true, true>(p, g, dt) : gatherImpl<true, false>(p, g, dt);
@@ -124,44 +140,6 @@ private:
         for (int d = 0; d < dim; ++d)
             for (int a = 0; a < W; ++a)
                 o[d][a] = grid_->axisOffset(d, s.base[d] + a);
-    }
-
-    /// 3D P2G of one particle with the sums factored per x-row of the stencil: with
-    /// w = w_x w_yz and ∇w·h = (w'_x w_yz, w_x w'_y w_z, w_x w_y w'_z), the affine momentum
-    /// m v + m C h (x_i - x_p)/h and the force -V σ ∇w are linear in the row's x offset a.
-    template <bool Momentum, bool Stress>
-    inline void scatter3(const Stencil& s, Grid<dim>& g, double m, const Vec<dim>& mv,
-                         const Mat<dim>& mC, const Mat<dim>& S) const {
-        Index o[dim][W];
-        offsets(s, o);
-        for (int c = 0; c < W; ++c) {
-            const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
-            for (int b = 0; b < W; ++b) {
-                const Index row = o[1][b] + o[2][c];
-                const double wyz = s.w[1][b] * wz;
-                const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
-                const double oy = b - s.fx[1];
-                // momentum(a) = mv + mC (a - fx, oy, oz) = p0 + a mC.col(0)
-                Vec<dim> p0 = mv;
-                if constexpr (Affine) p0 += mC * Vec<dim>(-s.fx[0], oy, oz);
-                // force(a) = S (w'_x(a) wyz, w_x(a) dyz, w_x(a) wdz) = w'_x(a) u + w_x(a) v
-                const Vec<dim> u = wyz * S.col(0);
-                const Vec<dim> v = dyz * S.col(1) + wdz * S.col(2);
-                for (int a = 0; a < W; ++a) {
-                    const Index node = row + o[0][a];
-                    const double wx = s.w[0][a];
-                    if constexpr (Momentum) {
-                        const double wgt = wx * wyz;
-                        g.mass[node] += wgt * m;
-                        if constexpr (Affine)
-                            g.momentum[node] += wgt * (p0 + double(a) * mC.col(0));
-                        else
-                            g.momentum[node] += wgt * p0;
-                    }
-                    if constexpr (Stress) g.force[node] += s.dw[0][a] * u + wx * v;
-                }
-            }
-        }
     }
 
     /// 3D G2P of one particle, the stencil sums factored per x-row like scatter3:
@@ -208,6 +186,63 @@ private:
         }
     }
 
+    /// 3D G2P of one particle from the node lines [v, 0 | v − v_old, 0] (the second half with
+    /// FLIP only), the stencil sums factored per x-row: r0 = Σ_a w_x v_i, r1 = Σ_a a w_x v_i,
+    /// r2 = Σ_a w'_x v_i, rd = Σ_a w_x (v_i − v_old,i), each one 4-lane vector (v padded).
+    template <bool Grad, bool Flip>
+    inline void gatherLines3(const Stencil& s, const NodeLine* lines, Vec<dim>& vPic, Vec<dim>& dv,
+                             Mat<dim>& B, Mat<dim>& L) const {
+        Index o[dim][W];
+        offsets(s, o);
+        const Double4 zero = {0.0, 0.0, 0.0, 0.0};
+        Double4 aV = zero, aB0 = zero, aB1 = zero, aB2 = zero, aD = zero;
+        Double4 aL0 = zero, aL1 = zero, aL2 = zero;
+        for (int c = 0; c < W; ++c) {
+            const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+            for (int b = 0; b < W; ++b) {
+                const Index row = o[1][b] + o[2][c];
+                const double wyz = s.w[1][b] * wz;
+                const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
+                Double4 r0 = zero, r1 = zero, r2 = zero, rd = zero;
+                for (int a = 0; a < W; ++a) {
+                    const NodeLine& q = lines[row + o[0][a]];
+                    const Double4 v = loadLow(q);
+                    const double wx = s.w[0][a];
+                    r0 += wx * v;
+                    if constexpr (Affine) r1 += (a * wx) * v;
+                    if constexpr (Grad) r2 += s.dw[0][a] * v;
+                    if constexpr (Flip) rd += wx * loadHigh(q);
+                }
+                aV += wyz * r0;
+                if constexpr (Affine) {
+                    aB0 += wyz * r1;
+                    aB1 += (wyz * (b - s.fx[1])) * r0;
+                    aB2 += (wyz * oz) * r0;
+                }
+                if constexpr (Flip) aD += wyz * rd;
+                if constexpr (Grad) {
+                    aL0 += wyz * r2;
+                    aL1 += dyz * r0;
+                    aL2 += wdz * r0;
+                }
+            }
+        }
+        auto vec = [](const Double4& x) { return Vec<dim>(x[0], x[1], x[2]); };
+        vPic = vec(aV);
+        if constexpr (Flip) dv = vec(aD);
+        if constexpr (Affine) {
+            // B = Σ w v_i (x_i - x_p)ᵀ/h: column 0 is Σ w v_i (a - fx).
+            B.col(0) = vec(aB0) - s.fx[0] * vPic;
+            B.col(1) = vec(aB1);
+            B.col(2) = vec(aB2);
+        }
+        if constexpr (Grad) {
+            L.col(0) = vec(aL0);
+            L.col(1) = vec(aL1);
+            L.col(2) = vec(aL2);
+        }
+    }
+
     /// Visit the stencil of one particle as nested loops (x fastest):
     /// fn(node, w_ip, ∇w_ip·h, (x_i - x_p)/h).
     template <class Fn> inline void forStencil(const Stencil& s, Fn&& fn) const {
@@ -238,11 +273,79 @@ private:
         }
     }
 
+    /// P2G of one particle into the node lines: low half [m, momentum, 0], high half
+    /// [internal force, 0]. With the stencil factored per x-row (w = w_x w_r,
+    /// ∇w·h = (w'_x w_r, w_x ∂_y w_r, w_x ∂_z w_r)), the contribution to node a of a row is
+    /// low += w_x(a) R0 + a w_x(a) R1, high += w_x(a) F0 + w'_x(a) F1 (four 4-lane
+    /// multiply-adds), with R0 = w_r [m, m v + m C h (−fx, oy, oz)], R1 = w_r [0, m C h e_x],
+    /// F0 = S (0, ∂_y w_r, ∂_z w_r), F1 = w_r S e_x and S = −V σ / h [000 Eq. 13].
+    template <bool Momentum, bool Stress>
+    inline void scatterOne(const Stencil& s, NodeLine* lines, double m, const Vec<dim>& mv,
+                           const Mat<dim>& mC, const Mat<dim>& S) const {
+        // Built from registers (brace initialisers), not lane by lane through memory.
+        auto at = [](const auto& v, int k) { return k < dim ? v[k] : 0.0; };
+        const Double4 zero = {0.0, 0.0, 0.0, 0.0};
+        Double4 P = zero, Q[3] = {zero, zero, zero}, T[3] = {zero, zero, zero};
+        if constexpr (Momentum) {
+            const Vec<dim> p0 = Affine ? Vec<dim>(mv - s.fx[0] * mC.col(0)) : mv;
+            P = Double4{m, at(p0, 0), at(p0, 1), at(p0, 2)};
+            if constexpr (Affine)
+                for (int d = 0; d < dim; ++d)
+                    Q[d] = Double4{0.0, at(mC.col(d), 0), at(mC.col(d), 1), at(mC.col(d), 2)};
+        }
+        if constexpr (Stress)
+            for (int d = 0; d < dim; ++d)
+                T[d] = Double4{at(S.col(d), 0), at(S.col(d), 1), at(S.col(d), 2), 0.0};
+        Index o[dim][W];
+        offsets(s, o);
+        // One row of the stencil: weight w_r and derivatives ∂_y w_r, ∂_z w_r; offsets oy, oz.
+        auto row = [&](Index first, double wr, double dy, double dz, double oy, double oz) {
+            const Double4 r0 = wr * (P + oy * Q[1] + oz * Q[2]), r1 = wr * Q[0];
+            const Double4 f0 = dy * T[1] + dz * T[2], f1 = wr * T[0];
+            for (int a = 0; a < W; ++a) {
+                NodeLine& q = lines[first + o[0][a]];
+                const double wx = s.w[0][a];
+                if constexpr (Momentum) {
+                    Double4 lo = loadLow(q) + wx * r0;
+                    if constexpr (Affine) lo += (a * wx) * r1;
+                    storeLow(q, lo);
+                }
+                if constexpr (Stress) storeHigh(q, loadHigh(q) + wx * f0 + s.dw[0][a] * f1);
+            }
+        };
+        if constexpr (dim == 2) {
+            for (int b = 0; b < W; ++b)
+                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - s.fx[1], 0.0);
+        } else {
+            for (int c = 0; c < W; ++c) {
+                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+                for (int b = 0; b < W; ++b)
+                    row(o[1][b] + o[2][c], s.w[1][b] * wz, s.dw[1][b] * wz, s.w[1][b] * dz,
+                        b - s.fx[1], oz);
+            }
+        }
+    }
+
+    /// Visit the lines of the active blocks, block by block in parallel: fn(node, line).
+    template <class Fn> static void forActiveLines(Grid<dim>& g, Fn&& fn) {
+        const auto& active = g.activeBlocks();
+        const Index na = static_cast<Index>(active.size());
+        constexpr Index Nb = Grid<dim>::NodesPerBlock;
+#pragma omp parallel for if (worthThreads(Nb * na)) schedule(static)
+        for (Index k = 0; k < na; ++k)
+            for (Index n = active[k] * Nb; n < (active[k] + 1) * Nb; ++n)
+                fn(n, g.lines[n]);
+    }
+
+    /// P2G: the active lines zeroed, every particle scattered into them (scatterOne; blocks of
+    /// one colour in parallel, colours in turn), then the sums added to the node fields.
     template <bool Momentum, bool Stress>
     void scatterImpl(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& sort) {
+        forActiveLines(g, [](Index, NodeLine& q) { q = NodeLine{}; });
         const double h = g.h();
         const double invH = g.invH();
         const auto& order = sort.order();
+        NodeLine* lines = g.lines.data();
         for (int colour = 0; colour < BlockSort<dim>::NumColours; ++colour) {
             const auto& blocks = sort.blocksOfColour(colour);
             const Index nb = static_cast<Index>(blocks.size());
@@ -251,37 +354,40 @@ private:
                 const Index b = blocks[bi];
                 for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
                     const Index i = order[j];
-                    const Stencil& s = st_[i];
                     const double m = p.mass[i];
-                    const Vec<dim> mv = m * p.v[i];
                     Mat<dim> mC = Mat<dim>::Zero();
                     if constexpr (Affine) mC = (m * h) * p.C[i];
                     Mat<dim> stressTerm = Mat<dim>::Zero();
                     if constexpr (Stress)
                         stressTerm =
                             (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
-                    if constexpr (dim == 3) {
-                        scatter3<Momentum, Stress>(s, g, m, mv, mC, stressTerm);
-                    } else {
-                        forStencil(s, [&](Index node, double wgt, const Vec<dim>& grad,
-                                          const Vec<dim>& offset) {
-                            if constexpr (Momentum) {
-                                g.mass[node] += wgt * m;
-                                if constexpr (Affine)
-                                    g.momentum[node] += wgt * (mv + mC * offset);
-                                else
-                                    g.momentum[node] += wgt * mv;
-                            }
-                            if constexpr (Stress) g.force[node] += stressTerm * grad;
-                        });
-                    }
+                    scatterOne<Momentum, Stress>(st_[i], lines, m, m * p.v[i], mC, stressTerm);
                 }
             }
         }
+        forActiveLines(g, [&g](Index n, const NodeLine& q) {
+            if constexpr (Momentum) {
+                g.mass[n] += q.v[0];
+                for (int d = 0; d < dim; ++d)
+                    g.momentum[n][d] += q.v[1 + d];
+            }
+            if constexpr (Stress)
+                for (int d = 0; d < dim; ++d)
+                    g.force[n][d] += q.v[4 + d];
+        });
     }
 
     template <bool Grad, bool Flip>
-    GatherStats gatherImpl(Particles<dim>& p, const Grid<dim>& g, double dt) {
+    GatherStats gatherImpl(Particles<dim>& p, Grid<dim>& g, double dt) {
+        if constexpr (dim == 3)
+            forActiveLines(g, [&g](Index k, NodeLine& q) {
+                for (int d = 0; d < dim; ++d) {
+                    q.v[d] = g.v[k][d];
+                    if constexpr (Flip) q.v[4 + d] = g.v[k][d] - g.vOld[k][d];
+                }
+                q.v[3] = q.v[7] = 0.0;
+            });
+        const NodeLine* lines = g.lines.data();
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();
         const double eta = ratio_;
@@ -296,7 +402,7 @@ private:
             Mat<dim> B = Mat<dim>::Zero();
             Mat<dim> L = Mat<dim>::Zero();
             if constexpr (dim == 3) {
-                gather3<Grad, Flip>(s, g, vPic, dv, B, L);
+                gatherLines3<Grad, Flip>(s, lines, vPic, dv, B, L);
             } else {
                 forStencil(
                     s, [&](Index node, double wgt, const Vec<dim>& grad, const Vec<dim>& offset) {

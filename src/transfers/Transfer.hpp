@@ -31,7 +31,9 @@ public:
     /// all transfers of the step.
     virtual void computeWeights(const Particles<dim>& p, const Grid<dim>& g) = 0;
 
-    /// P2G of mass and momentum [000 Eq. 13] (APIC adds the affine term m_p C_p (x_i - x_p)).
+    /// P2G of mass and momentum [000 Eq. 13] (APIC adds the affine term m_p C_p (x_i - x_p))
+    /// into the grid's active blocks, which must hold every stencil (Grid::activate); the sums
+    /// are added to the node fields.
     /// With `withStress` the internal force f_i = -Σ V_p σ_p ∇w_ip is scattered in the same
     /// pass (USL); otherwise it is left for scatterForce (USF).
     virtual void scatter(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& s,
@@ -57,7 +59,7 @@ public:
 
     /// G2P: velocity by the FLIP/PIC blend [000 Eq. 15] or APIC [000 Eq. 17], position
     /// [000 Eq. 16], and (with `withGradient`, USL) L_p from the updated velocity.
-    virtual GatherStats gather(Particles<dim>& p, const Grid<dim>& g, double dt,
+    virtual GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt,
                                bool withGradient) = 0;
 
     /// Build the transfer selected in system/mpmSchemes; `particleHalfWidth` is GIMP's l_p / h.

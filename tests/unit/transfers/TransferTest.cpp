@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Conservation, reproduction and determinism of the particle ↔ grid transfers.
 #include "transfers/Transfer.hpp"
+#include "TestSupport.hpp"
 #include "core/Parallel.hpp"
 
 #include "kernels/Kernels.hpp"
@@ -88,7 +89,9 @@ Particles<dim> randomParticles(const Grid<dim>& g, int n, unsigned seed, bool af
     return p;
 }
 
+/// Zero the node fields, every block active (the transfers act on the active blocks).
 template <int dim> void clearGrid(Grid<dim>& g) {
+    test::activateAll(g);
     std::fill(g.mass.begin(), g.mass.end(), 0.0);
     std::fill(g.momentum.begin(), g.momentum.end(), Vec<dim>::Zero());
     std::fill(g.force.begin(), g.force.end(), Vec<dim>::Zero());
@@ -256,8 +259,9 @@ TEST(Transfer, RoundTripConservesMomentum3D) {
     checkRoundTrip<3>(600);
 }
 
-/// Grid velocity set to the affine field a + A x on every node.
+/// Grid velocity set to the affine field a + A x on every node (every block active).
 template <int dim> void setAffineGridVelocity(Grid<dim>& g, const Vec<dim>& a, const Mat<dim>& A) {
+    test::activateAll(g);
     for (Index k = 0; k < g.numNodes(); ++k) {
         g.v[k] = a + A * nodePos(g, k);
         g.vOld[k] = g.v[k];
