@@ -94,14 +94,32 @@ inline void jacobiRotate(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
 /// compiler vectorises across lanes; sweeps stop when every lane has converged. Each lane gives
 /// the same result as it would alone, whatever its neighbours (extra sweeps leave a converged
 /// lane unchanged to round-off only, so results are deterministic for a fixed batching).
+template <int Lanes> void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]);
+
 template <int Lanes> void symmetricEigen3Batch(const Mat3* A, Vec3* lambda, Mat3* Q) {
     alignas(64) double a[6][Lanes];
     alignas(64) double q[9][Lanes];
-    alignas(64) double tol[Lanes];
     for (int l = 0; l < Lanes; ++l) {
         const Mat3& m = A[l];
         a[0][l] = m(0, 0), a[1][l] = m(1, 1), a[2][l] = m(2, 2);
         a[3][l] = m(0, 1), a[4][l] = m(0, 2), a[5][l] = m(1, 2);
+    }
+    symmetricEigen3Lanes<Lanes>(a, q);
+    for (int l = 0; l < Lanes; ++l) {
+        lambda[l] = Vec3(a[0][l], a[1][l], a[2][l]);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                Q[l](i, j) = q[3 * i + j][l];
+    }
+}
+
+/// symmetricEigen3Batch on matrices already in lanes (structure of arrays): a holds
+/// (a00 a11 a22 a01 a02 a12) of each lane on entry and the eigenvalues in a[0…2] on return
+/// (a[3…5] ≈ 0); q gets the eigenvectors, q[3 i + j] = Q_ij (column j the j-th eigenvector).
+template <int Lanes> void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
+    alignas(64) double tol[Lanes];
+#pragma omp simd
+    for (int l = 0; l < Lanes; ++l) {
         for (int k = 0; k < 9; ++k)
             q[k][l] = (k % 4 == 0) ? 1.0 : 0.0;
         tol[l] = 1e-30 + 1e-16 * (std::fabs(a[0][l]) + std::fabs(a[1][l]) + std::fabs(a[2][l]) +
@@ -115,12 +133,6 @@ template <int Lanes> void symmetricEigen3Batch(const Mat3* A, Vec3* lambda, Mat3
         detail::jacobiRotate<Lanes, 0, 1, 3, 4, 5>(a, q);
         detail::jacobiRotate<Lanes, 0, 2, 4, 3, 5>(a, q);
         detail::jacobiRotate<Lanes, 1, 2, 5, 3, 4>(a, q);
-    }
-    for (int l = 0; l < Lanes; ++l) {
-        lambda[l] = Vec3(a[0][l], a[1][l], a[2][l]);
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                Q[l](i, j) = q[3 * i + j][l];
     }
 }
 

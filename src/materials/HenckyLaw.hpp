@@ -5,6 +5,7 @@
 #include "core/Parallel.hpp"
 #include "core/SymmetricEigen.hpp"
 #include "materials/FlowRules.hpp"
+#include "materials/HenckyBatch.hpp"
 #include "materials/HenckyReturnMap.hpp"
 #include "materials/Material.hpp"
 
@@ -64,9 +65,7 @@ struct HenckyLaw {
     template <int dim>
     static Index elasticUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
                                const ElasticConstants& c) {
-        // Particles go through in batches of Lanes so that the eigen-decompositions vectorise
-        // across particles (DESIGN §7); the last batch is padded with copies of its first
-        // particle.
+        // Particles go through in batches of Lanes, vectorised across particles (HenckyBatch).
         constexpr int Lanes = 8;
         const Index n = static_cast<Index>(ids.size());
         const Index batches = (n + Lanes - 1) / Lanes;
@@ -74,31 +73,29 @@ struct HenckyLaw {
         Index bad = n;
 #pragma omp parallel for if (worthThreads(8 * batches)) schedule(static) reduction(min : bad)
         for (Index b = 0; b < batches; ++b) {
-            Mat3 be[Lanes], Q[Lanes];
-            Vec3 lam[Lanes];
-            Index idx[Lanes];
-            for (int l = 0; l < Lanes; ++l) {
-                const Index k = std::min(b * Lanes + l, n - 1);
-                idx[l] = ids[k];
-                const Mat3 f = Mat3::Identity() + dt * embed3<dim>(p.L[idx[l]]);
-                be[l] = f * p.be[idx[l]] * f.transpose();
-            }
-            symmetricEigen3Batch<Lanes>(be, lam, Q);
-            // ε = ½ ln bᵉ in principal axes, vectorised across the batch.
-            double eps[3][Lanes];
+            HenckyBatch<Lanes> h;
+            h.trial(p, ids, b * Lanes, dt);
+            // ε = ½ ln bᵉ in principal axes; σ = τ/J.
+            alignas(64) double tau[3][Lanes], sig[6][Lanes];
 #pragma omp simd
-            for (int l = 0; l < Lanes; ++l)
-                for (int a = 0; a < 3; ++a)
-                    eps[a][l] = 0.5 * fastLog(lam[l][a]);
+            for (int l = 0; l < Lanes; ++l) {
+                const double e0 = 0.5 * fastLog(h.lam[0][l]);
+                const double e1 = 0.5 * fastLog(h.lam[1][l]);
+                const double e2 = 0.5 * fastLog(h.lam[2][l]);
+                const double tr = e0 + e1 + e2;
+                tau[0][l] = principalStress(lambda, twoG, tr, e0, h.jInv[l]);
+                tau[1][l] = principalStress(lambda, twoG, tr, e1, h.jInv[l]);
+                tau[2][l] = principalStress(lambda, twoG, tr, e2, h.jInv[l]);
+            }
+            h.fromPrincipal(tau, sig);
             for (int l = 0; l < Lanes; ++l) {
                 if (b * Lanes + l >= n) break;
-                const Index i = idx[l];
-                // τ = λ tr(ε) 1 + 2G ε [000 Eq. 4–5]; σ = τ/J with J = V/V⁰.
-                const Vec3 e(eps[0][l], eps[1][l], eps[2][l]);
-                const Vec3 tau = (lambda * e.sum()) * Vec3::Ones() + twoG * e;
-                p.be[i] = be[l];
-                p.stress[i] = fromEigen(Q[l], tau * (p.volume0[i] / p.volume[i]));
-                if (!std::isfinite(p.stress[i].sum())) bad = std::min(bad, b * Lanes + l);
+                const Index i = h.idx[l];
+                p.be[i] = HenckyBatch<Lanes>::tensor(h.be, l);
+                p.stress[i] = HenckyBatch<Lanes>::tensor(sig, l);
+                if (!std::isfinite(sig[0][l] + sig[1][l] + sig[2][l] + sig[3][l] + sig[4][l] +
+                                   sig[5][l]))
+                    bad = std::min(bad, b * Lanes + l);
             }
         }
         return bad < n ? ids[bad] : -1;

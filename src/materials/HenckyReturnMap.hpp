@@ -5,6 +5,7 @@
 #include "core/Parallel.hpp"
 #include "core/SymmetricEigen.hpp"
 #include "materials/FlowRules.hpp"
+#include "materials/HenckyBatch.hpp"
 #include "materials/Material.hpp"
 
 #include <algorithm>
@@ -73,27 +74,17 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
     Index bad = n;
 #pragma omp parallel for if (worthThreads(8 * batches)) schedule(static) reduction(min : bad)
     for (Index b = 0; b < batches; ++b) {
-        Mat3 be[Lanes], Q[Lanes];
-        Vec3 lam[Lanes];
-        Index idx[Lanes];
-        alignas(64) double jInv[Lanes], rho[Lanes];
-        for (int l = 0; l < Lanes; ++l) {
-            const Index k = std::min(b * Lanes + l, n - 1);
-            const Index i = ids[k];
-            idx[l] = i;
-            const Mat3 f = Mat3::Identity() + dt * embed3<dim>(p.L[i]);
-            be[l] = f * p.be[i] * f.transpose();
-            jInv[l] = p.volume0[i] / p.volume[i];
-            rho[l] = p.mass[i] / p.volume[i];
-        }
-        symmetricEigen3Batch<Lanes>(be, lam, Q);
+        HenckyBatch<Lanes> h;
+        h.trial(p, ids, b * Lanes, dt);
+        const double* jInv = h.jInv;
+        const double* rho = h.rho;
         alignas(64) double tau[3][Lanes], lamNew[3][Lanes], dGamma[Lanes];
         alignas(64) double state[Lanes]; // 0: elastic (trial bᵉ), 1: plastic, 2: stress-free
 #pragma omp simd
         for (int l = 0; l < Lanes; ++l) {
-            const double e0 = 0.5 * fastLog(lam[l][0]);
-            const double e1 = 0.5 * fastLog(lam[l][1]);
-            const double e2 = 0.5 * fastLog(lam[l][2]);
+            const double e0 = 0.5 * fastLog(h.lam[0][l]);
+            const double e1 = 0.5 * fastLog(h.lam[1][l]);
+            const double e2 = 0.5 * fastLog(h.lam[2][l]);
             const double ev = e0 + e1 + e2, evThird = ev / 3.0;
             const double d0 = e0 - evThird, d1 = e1 - evThird, d2 = e2 - evThird;
             const double dn = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
@@ -115,30 +106,33 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
             n2 = stressFree ? 0.0 : n2;
             // τ = λ tr ε 1 + 2G ε [000 Eq. 4–5]; σ = τ/J with J = V/V⁰.
             const double trn = n0 + n1 + n2;
-            tau[0][l] = (lambda * trn + twoG * n0) * jInv[l];
-            tau[1][l] = (lambda * trn + twoG * n1) * jInv[l];
-            tau[2][l] = (lambda * trn + twoG * n2) * jInv[l];
+            tau[0][l] = principalStress(lambda, twoG, trn, n0, jInv[l]);
+            tau[1][l] = principalStress(lambda, twoG, trn, n1, jInv[l]);
+            tau[2][l] = principalStress(lambda, twoG, trn, n2, jInv[l]);
             lamNew[0][l] = fastExp(2.0 * n0);
             lamNew[1][l] = fastExp(2.0 * n1);
             lamNew[2][l] = fastExp(2.0 * n2);
             dGamma[l] = stressFree ? (gas ? 0.0 : sqrt2 * dn) : dg;
             state[l] = stressFree ? 2.0 : (plastic ? 1.0 : 0.0);
         }
+        alignas(64) double beNew[6][Lanes], sig[6][Lanes];
+        h.fromPrincipal(lamNew, beNew);
+        h.fromPrincipal(tau, sig);
         for (int l = 0; l < Lanes; ++l) {
             if (b * Lanes + l >= n) break;
-            const Index i = idx[l];
+            const Index i = h.idx[l];
             if (state[l] == 2.0) {
                 p.be[i].setIdentity();
                 p.stress[i].setZero();
             } else {
-                p.be[i] = state[l] == 0.0
-                              ? be[l]
-                              : fromEigen(Q[l], Vec3(lamNew[0][l], lamNew[1][l], lamNew[2][l]));
-                p.stress[i] = fromEigen(Q[l], Vec3(tau[0][l], tau[1][l], tau[2][l]));
+                p.be[i] = HenckyBatch<Lanes>::tensor(state[l] == 0.0 ? h.be : beNew, l);
+                p.stress[i] = HenckyBatch<Lanes>::tensor(sig, l);
             }
             p.plasticStrain[i] += dGamma[l];
-            // The trial eigenvalues catch a non-finite L also where the point ends stress-free.
-            if (!std::isfinite(p.stress[i].sum() + lam[l].sum() + dGamma[l]))
+            // The trial eigenvalues catch a non-finite L also where the point ends stress-free
+            // (summed from the lanes, not re-read from the tensors just stored).
+            if (!std::isfinite(h.lam[0][l] + h.lam[1][l] + h.lam[2][l] + dGamma[l] + sig[0][l] +
+                               sig[1][l] + sig[2][l] + sig[3][l] + sig[4][l] + sig[5][l]))
                 bad = std::min(bad, b * Lanes + l);
         }
     }

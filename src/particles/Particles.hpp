@@ -145,9 +145,11 @@ template <int dim> struct Particles {
         Index inverted = n;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)
         for (Index i = 0; i < n; ++i) {
-            F[i] = (Mat<dim>::Identity() + dt * L[i]) * F[i];
+            // The new F from registers: det F is not re-read from the stores just made.
+            const Mat<dim> Fn = (Mat<dim>::Identity() + dt * L[i]) * F[i];
+            F[i] = Fn;
             volume[i] = volumeFromRate[material[i]] ? volume[i] * std::exp(dt * L[i].trace())
-                                                    : F[i].determinant() * volume0[i];
+                                                    : Fn.determinant() * volume0[i];
             if (!(volume[i] > 0 && volume[i] < std::numeric_limits<double>::infinity()))
                 inverted = std::min(inverted, i);
         }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 
 namespace mpm {
 
@@ -15,18 +16,23 @@ namespace {
 /// Four doubles as one SIMD vector (GCC/Clang vector extension: one AVX register, or two SSE).
 using Double4 = double __attribute__((vector_size(32)));
 
-/// Lanes 0–3 and 4–7 of a node line.
+/// Lanes 0–3 and 4–7 of a node line (memcpy: no aliasing of double by the vector type; it
+/// compiles to one aligned vector move).
 inline Double4 loadLow(const NodeLine& q) {
-    return *reinterpret_cast<const Double4*>(q.v);
+    Double4 x;
+    std::memcpy(&x, q.v, sizeof x);
+    return x;
 }
 inline Double4 loadHigh(const NodeLine& q) {
-    return *reinterpret_cast<const Double4*>(q.v + 4);
+    Double4 x;
+    std::memcpy(&x, q.v + 4, sizeof x);
+    return x;
 }
 inline void storeLow(NodeLine& q, const Double4& x) {
-    *reinterpret_cast<Double4*>(q.v) = x;
+    std::memcpy(q.v, &x, sizeof x);
 }
 inline void storeHigh(NodeLine& q, const Double4& x) {
-    *reinterpret_cast<Double4*>(q.v + 4) = x;
+    std::memcpy(q.v + 4, &x, sizeof x);
 }
 
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
@@ -140,50 +146,6 @@ private:
         for (int d = 0; d < dim; ++d)
             for (int a = 0; a < W; ++a)
                 o[d][a] = grid_->axisOffset(d, s.base[d] + a);
-    }
-
-    /// 3D G2P of one particle, the stencil sums factored per x-row like scatter3:
-    /// r0 = Σ_a w_x v_i, r1 = Σ_a a w_x v_i, r2 = Σ_a w'_x v_i.
-    template <bool Grad, bool Flip>
-    inline void gather3(const Stencil& s, const Grid<dim>& g, Vec<dim>& vPic, Vec<dim>& dv,
-                        Mat<dim>& B, Mat<dim>& L) const {
-        Index o[dim][W];
-        offsets(s, o);
-        Vec<dim> b0 = Vec<dim>::Zero(), b1 = Vec<dim>::Zero(), b2 = Vec<dim>::Zero();
-        for (int c = 0; c < W; ++c) {
-            const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
-            for (int b = 0; b < W; ++b) {
-                const Index row = o[1][b] + o[2][c];
-                const double wyz = s.w[1][b] * wz;
-                const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
-                const double oy = b - s.fx[1];
-                Vec<dim> r0 = Vec<dim>::Zero(), r1 = Vec<dim>::Zero(), r2 = Vec<dim>::Zero();
-                for (int a = 0; a < W; ++a) {
-                    const Vec<dim>& vi = g.v[row + o[0][a]];
-                    r0 += s.w[0][a] * vi;
-                    if constexpr (Affine) r1 += (a * s.w[0][a]) * vi;
-                    if constexpr (Grad) r2 += s.dw[0][a] * vi;
-                    if constexpr (Flip) dv += (s.w[0][a] * wyz) * (vi - g.vOld[row + o[0][a]]);
-                }
-                vPic += wyz * r0;
-                if constexpr (Affine) {
-                    b0 += wyz * r1;
-                    b1 += (wyz * oy) * r0;
-                    b2 += (wyz * oz) * r0;
-                }
-                if constexpr (Grad) {
-                    L.col(0) += wyz * r2;
-                    L.col(1) += dyz * r0;
-                    L.col(2) += wdz * r0;
-                }
-            }
-        }
-        if constexpr (Affine) {
-            // B = Σ w v_i (x_i - x_p)ᵀ/h: column 0 is Σ w v_i (a - fx).
-            B.col(0) = b0 - s.fx[0] * vPic;
-            B.col(1) = b1;
-            B.col(2) = b2;
-        }
     }
 
     /// 3D G2P of one particle from the node lines [v, 0 | v − v_old, 0] (the second half with
@@ -413,19 +375,19 @@ private:
                         if constexpr (Grad) L.noalias() += vi * grad.transpose();
                     });
             }
-            if constexpr (Affine) {
-                p.v[i] = vPic;
+            // New v and x from registers: the checks below do not re-read the stores.
+            Vec<dim> v = vPic;
+            if constexpr (Affine)
                 p.C[i] = B * (invH / K::InertiaFactor);
-            } else if constexpr (Flip) {
-                p.v[i] = eta * (p.v[i] + dv) + (1.0 - eta) * vPic;
-            } else {
-                p.v[i] = vPic;
-            }
+            else if constexpr (Flip)
+                v = eta * (p.v[i] + dv) + (1.0 - eta) * vPic;
+            p.v[i] = v;
             if constexpr (Grad) p.L[i] = L * invH;
-            p.x[i] += dt * vPic;
+            const Vec<dim> x = p.x[i] + dt * vPic;
+            p.x[i] = x;
             move2 = std::max(move2, vPic.squaredNorm());
-            const double v2 = p.v[i].squaredNorm();
-            if (!std::isfinite(v2) || !std::isfinite(p.x[i].sum())) bad = std::min(bad, i);
+            const double v2 = v.squaredNorm();
+            if (!std::isfinite(v2) || !std::isfinite(x.sum())) bad = std::min(bad, i);
             vmax2 = std::max(vmax2, v2);
             ke += 0.5 * p.mass[i] * v2;
         }
