@@ -84,21 +84,23 @@ Index hypoelasticReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& id
         const double u = sm - cut.sigmaT, v = tau - cut.tauC;
         const double fs = flow.yield(tau, -sm);
         double dGamma = 0.0;
+        Mat3 sig; // built in registers, stored once (the check does not re-read the store)
         if (p.mass[i] / p.volume[i] < rhoC) {
-            p.stress[i].setZero(); // gasified
+            sig.setZero(); // gasified
         } else if (fs <= 0.0 && u <= 0.0) {
-            p.stress[i] = trial;
+            sig = trial;
         } else if (fs > 0.0 && G * u - Kbeta * v < 0.0) {
             dGamma = flow.multiplier(tau, -sm, 1.0);
-            p.stress[i] = (sm - Kbeta * dGamma) * Mat3::Identity() + ((tau - G * dGamma) / tau) * s;
+            sig = (sm - Kbeta * dGamma) * Mat3::Identity() + ((tau - G * dGamma) / tau) * s;
         } else if (v <= 0.0) {
-            p.stress[i] = cut.sigmaT * Mat3::Identity() + s;
+            sig = cut.sigmaT * Mat3::Identity() + s;
         } else {
             dGamma = v / G;
-            p.stress[i] = cut.sigmaT * Mat3::Identity() + (cut.tauC / tau) * s;
+            sig = cut.sigmaT * Mat3::Identity() + (cut.tauC / tau) * s;
         }
+        p.stress[i] = sig;
         p.plasticStrain[i] += dGamma;
-        if (!std::isfinite(p.stress[i].sum() + trial.sum() + dGamma)) bad = std::min(bad, k);
+        if (!std::isfinite(sig.sum() + trial.sum() + dGamma)) bad = std::min(bad, k);
     }
     return bad < n ? ids[bad] : -1;
 }
