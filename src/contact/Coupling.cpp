@@ -64,7 +64,7 @@ void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Vec<dim>&
         Index b = 0;
         for (int d = dim - 1; d >= 0; --d)
             b = b * grid.blocks()[d] + c[d];
-        if (sort.start(b) < sort.start(b + 1)) {
+        if (const auto r = sort.particlesOf(b); r.begin < r.end) {
             Vec<dim> corner;
             for (int d = 0; d < dim; ++d)
                 corner[d] = grid.origin()[d] + c[d] * size;
@@ -79,7 +79,7 @@ void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Vec<dim>&
                     if (body.distance(half - shift, normal) <= 0.5 * halfDiagonal + margin)
                         keep |= 1 << q;
                 }
-                for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+                for (Index j = r.begin; j < r.end; ++j) {
                     const Index i = order[j];
                     int q = 0;
                     for (int d = 0; d < dim; ++d)

@@ -2,9 +2,44 @@
 #include "particles/BlockSort.hpp"
 #include "core/Parallel.hpp"
 
-#include <atomic>
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
 
 namespace mpm {
+
+template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
+    constexpr int Bits = 11;
+    constexpr std::uint32_t Buckets = 1u << Bits;
+    const Index n = static_cast<Index>(block_.size());
+    int passes = 1;
+    while ((Index(1) << (Bits * passes)) < numBlocks)
+        ++passes;
+    order_.resize(n);
+    orderTmp_.resize(n);
+    key_.resize(n);
+    keyTmp_.resize(n);
+    for (Index i = 0; i < n; ++i) {
+        order_[i] = i;
+        key_[i] = static_cast<std::uint32_t>(block_[i]);
+    }
+    std::vector<Index> count(Buckets + 1);
+    for (int pass = 0; pass < passes; ++pass) {
+        const int shift = Bits * pass;
+        std::fill(count.begin(), count.end(), 0);
+        for (Index j = 0; j < n; ++j)
+            ++count[((key_[j] >> shift) & (Buckets - 1)) + 1];
+        for (std::uint32_t d = 0; d < Buckets; ++d)
+            count[d + 1] += count[d];
+        for (Index j = 0; j < n; ++j) {
+            const Index to = count[(key_[j] >> shift) & (Buckets - 1)]++;
+            orderTmp_[to] = order_[j];
+            keyTmp_[to] = key_[j];
+        }
+        order_.swap(orderTmp_);
+        key_.swap(keyTmp_);
+    }
+}
 
 template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const Grid<dim>& grid) {
     const Index n = static_cast<Index>(p.size());
@@ -24,25 +59,39 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
         }
     }
     if (firstOutside < n) return firstOutside;
-
-    start_.assign(nb + 1, 0);
-    for (Index i = 0; i < n; ++i)
-        ++start_[block_[i] + 1];
-    for (Index b = 0; b < nb; ++b)
-        start_[b + 1] += start_[b];
-    order_.resize(n);
-    {
-        std::vector<Index> next(start_.begin(), start_.end() - 1);
-        for (Index i = 0; i < n; ++i)
-            order_[next[block_[i]]++] = i;
+    if (static_cast<Index>(slot_.size()) != nb) {
+        if (nb > std::numeric_limits<std::int32_t>::max())
+            throw std::length_error("BlockSort: more than 2³¹ blocks");
+        slot_.assign(nb, -1);
+        active_.assign(nb, 0);
+        blocks_.clear();
+        activeNodeBlocks_.clear();
     }
+    sortByBlock(nb);
+
+    // The occupied blocks and their ranges; last step's entries of the per-block index are
+    // forgotten one by one (no pass over the box).
+    for (Index b : blocks_)
+        slot_[b] = -1;
+    blocks_.clear();
+    begin_.clear();
+    for (Index j = 0; j < n; ++j) {
+        const Index b = key_[j];
+        if (j == 0 || b != blocks_.back()) {
+            slot_[b] = static_cast<std::int32_t>(blocks_.size());
+            blocks_.push_back(b);
+            begin_.push_back(j);
+        }
+    }
+    begin_.push_back(n);
 
     for (auto& c : colourBlocks_)
         c.clear();
-    active_.assign(nb, 0);
+    for (Index b : activeNodeBlocks_)
+        active_[b] = 0;
+    activeNodeBlocks_.clear();
     const IVec<dim> nbDims = grid.blocks();
-    for (Index b = 0; b < nb; ++b) {
-        if (start_[b + 1] == start_[b]) continue;
+    for (Index b : blocks_) {
         const IVec<dim> c = grid.blockCoord(b);
         int colour = 0;
         for (int d = 0; d < dim; ++d)
@@ -58,16 +107,17 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
                 if (cd < 0 || cd >= nbDims[d]) inside = false;
                 k = k * nbDims[d] + cd;
             }
-            if (inside) active_[k] = 1;
+            if (inside && !active_[k]) {
+                active_[k] = 1;
+                activeNodeBlocks_.push_back(k);
+            }
             int d = 0;
             while (d < dim && ++o[d] > 1)
                 o[d++] = -1;
             if (d == dim) break;
         }
     }
-    activeNodeBlocks_.clear();
-    for (Index b = 0; b < nb; ++b)
-        if (active_[b]) activeNodeBlocks_.push_back(b);
+    std::sort(activeNodeBlocks_.begin(), activeNodeBlocks_.end());
     return -1;
 }
 

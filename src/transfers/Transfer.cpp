@@ -96,7 +96,8 @@ public:
             const Index nb = static_cast<Index>(blocks.size());
 #pragma omp parallel for if (worthThreads(static_cast <Index>(q.size()))) schedule(dynamic, 1)
             for (Index bi = 0; bi < nb; ++bi) {
-                for (Index j = sort.start(blocks[bi]); j < sort.start(blocks[bi] + 1); ++j) {
+                const auto r = sort.particlesOf(blocks[bi]);
+                for (Index j = r.begin; j < r.end; ++j) {
                     const Index i = order[j];
                     forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&,
                                            const Vec<dim>&) { out[node] += wgt * q[i]; });
@@ -313,8 +314,8 @@ private:
             const Index nb = static_cast<Index>(blocks.size());
 #pragma omp parallel for if (worthThreads(static_cast <Index>(p.size()))) schedule(dynamic, 1)
             for (Index bi = 0; bi < nb; ++bi) {
-                const Index b = blocks[bi];
-                for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+                const auto r = sort.particlesOf(blocks[bi]);
+                for (Index j = r.begin; j < r.end; ++j) {
                     const Index i = order[j];
                     const double m = p.mass[i];
                     Mat<dim> mC = Mat<dim>::Zero();

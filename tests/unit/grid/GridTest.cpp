@@ -266,11 +266,12 @@ template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed)
     ASSERT_EQ(order.size(), p.size());
     std::vector<int> seen(p.size(), 0);
     for (Index b = 0; b < g.numBlocks(); ++b) {
-        for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+        const auto r = sort.particlesOf(b);
+        for (Index j = r.begin; j < r.end; ++j) {
             const Index i = order[j];
             ++seen[i];
             ASSERT_EQ(g.blockOf((p.x[i] - g.origin()) * g.invH()), b);
-            if (j > sort.start(b)) {
+            if (j > r.begin) {
                 ASSERT_LT(order[j - 1], i);
             }
         }
@@ -290,7 +291,8 @@ template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed)
             EXPECT_EQ(colour, c);
         }
     for (Index b = 0; b < g.numBlocks(); ++b)
-        EXPECT_EQ(listed[b], sort.start(b + 1) > sort.start(b) ? 1 : 0) << "block " << b;
+        EXPECT_EQ(listed[b], sort.particlesOf(b).end > sort.particlesOf(b).begin ? 1 : 0)
+            << "block " << b;
 
     // Brute force: within one colour, no two blocks' particles share a stencil node — neither
     // with the particles present nor for any point the block could hold.
@@ -300,7 +302,7 @@ template <int dim> void checkColouring(const Grid<dim>& g, int n, unsigned seed)
         std::vector<std::set<Index>> nodes(blocks.size()), worst(blocks.size());
         for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
             const Index b = blocks[bi];
-            for (Index j = sort.start(b); j < sort.start(b + 1); ++j) {
+            for (Index j = sort.particlesOf(b).begin; j < sort.particlesOf(b).end; ++j) {
                 const Vec<dim> xh = (p.x[order[j]] - g.origin()) * g.invH();
                 stencilNodes(g, xh, nodes[bi]);
             }
@@ -348,6 +350,41 @@ TEST(BlockSort, SameColourBlocksShareNoStencilNode2D) {
 TEST(BlockSort, SameColourBlocksShareNoStencilNode3D) {
     const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 0.75, 1.25]}\ncellSize: 0.125\n"));
     checkColouring(g, 3000, 2);
+}
+
+TEST(BlockSort, ReusedSortEqualsAFreshOneAndCountingSort) {
+    // 5832 blocks: the radix sort takes two passes. A sort updated first with other particles
+    // (the per-block index forgotten entry by entry) gives what a fresh sort and a counting
+    // sort over every block give.
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\ncellSize: 0.015625\n"));
+    ASSERT_GT(g.numBlocks(), 2048);
+    const Particles<3> a = randomParticles(g, 4000, 5);
+    Particles<3> b = randomParticles(g, 3000, 6);
+    for (auto& x : b.x)
+        x = 0.3 * x; // a corner of the box: most of a's blocks empty now
+    BlockSort<3> reused, fresh;
+    ASSERT_EQ(reused.update(a, g), -1);
+    ASSERT_EQ(reused.update(b, g), -1);
+    ASSERT_EQ(fresh.update(b, g), -1);
+    EXPECT_EQ(reused.order(), fresh.order());
+    EXPECT_EQ(reused.occupiedBlocks(), fresh.occupiedBlocks());
+    EXPECT_EQ(reused.activeNodeBlocks(), fresh.activeNodeBlocks());
+    for (int c = 0; c < BlockSort<3>::NumColours; ++c)
+        EXPECT_EQ(reused.blocksOfColour(c), fresh.blocksOfColour(c));
+    std::vector<std::vector<Index>> byBlock(g.numBlocks());
+    for (Index i = 0; i < static_cast<Index>(b.size()); ++i)
+        byBlock[g.blockOf((b.x[i] - g.origin()) * g.invH())].push_back(i);
+    Index pos = 0;
+    for (Index blk = 0; blk < g.numBlocks(); ++blk) {
+        const auto r = reused.particlesOf(blk);
+        ASSERT_EQ(r.end - r.begin, static_cast<Index>(byBlock[blk].size())) << blk;
+        if (byBlock[blk].empty()) continue;
+        ASSERT_EQ(r.begin, pos) << blk;
+        for (Index j = r.begin; j < r.end; ++j)
+            ASSERT_EQ(reused.order()[j], byBlock[blk][j - r.begin]);
+        pos = r.end;
+    }
+    EXPECT_EQ(pos, static_cast<Index>(b.size()));
 }
 
 TEST(BlockSort, ReportsFirstParticleOutsideArrays) {
