@@ -149,61 +149,72 @@ private:
                 o[d][a] = grid_->axisOffset(d, s.base[d] + a);
     }
 
-    /// 3D G2P of one particle from the node lines [v, 0 | v − v_old, 0] (the second half with
+    /// G2P of one particle from the node lines [v, 0 | v − v_old, 0] (the second half with
     /// FLIP only), the stencil sums factored per x-row: r0 = Σ_a w_x v_i, r1 = Σ_a a w_x v_i,
-    /// r2 = Σ_a w'_x v_i, rd = Σ_a w_x (v_i − v_old,i), each one 4-lane vector (v padded).
+    /// r2 = Σ_a w'_x v_i, rd = Σ_a w_x (v_i − v_old,i), each one 4-lane vector (v padded); a
+    /// row has weight w_r, derivatives ∂_y w_r, ∂_z w_r and offsets oy, oz.
     template <bool Grad, bool Flip>
-    inline void gatherLines3(const Stencil& s, const NodeLine* lines, Vec<dim>& vPic, Vec<dim>& dv,
-                             Mat<dim>& B, Mat<dim>& L) const {
+    inline void gatherLines(const Stencil& s, const NodeLine* lines, Vec<dim>& vPic, Vec<dim>& dv,
+                            Mat<dim>& B, Mat<dim>& L) const {
         Index o[dim][W];
         offsets(s, o);
         const Double4 zero = {0.0, 0.0, 0.0, 0.0};
         Double4 aV = zero, aB0 = zero, aB1 = zero, aB2 = zero, aD = zero;
         Double4 aL0 = zero, aL1 = zero, aL2 = zero;
-        for (int c = 0; c < W; ++c) {
-            const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
-            for (int b = 0; b < W; ++b) {
-                const Index row = o[1][b] + o[2][c];
-                const double wyz = s.w[1][b] * wz;
-                const double dyz = s.dw[1][b] * wz, wdz = s.w[1][b] * dz;
-                Double4 r0 = zero, r1 = zero, r2 = zero, rd = zero;
-                for (int a = 0; a < W; ++a) {
-                    const NodeLine& q = lines[row + o[0][a]];
-                    const Double4 v = loadLow(q);
-                    const double wx = s.w[0][a];
-                    r0 += wx * v;
-                    if constexpr (Affine) r1 += (a * wx) * v;
-                    if constexpr (Grad) r2 += s.dw[0][a] * v;
-                    if constexpr (Flip) rd += wx * loadHigh(q);
-                }
-                aV += wyz * r0;
-                if constexpr (Affine) {
-                    aB0 += wyz * r1;
-                    aB1 += (wyz * (b - s.fx[1])) * r0;
-                    aB2 += (wyz * oz) * r0;
-                }
-                if constexpr (Flip) aD += wyz * rd;
-                if constexpr (Grad) {
-                    aL0 += wyz * r2;
-                    aL1 += dyz * r0;
-                    aL2 += wdz * r0;
-                }
+        auto row = [&](Index first, double wr, double dy, double dz, double oy, double oz) {
+            Double4 r0 = zero, r1 = zero, r2 = zero, rd = zero;
+            for (int a = 0; a < W; ++a) {
+                const NodeLine& q = lines[first + o[0][a]];
+                const Double4 v = loadLow(q);
+                const double wx = s.w[0][a];
+                r0 += wx * v;
+                if constexpr (Affine) r1 += (a * wx) * v;
+                if constexpr (Grad) r2 += s.dw[0][a] * v;
+                if constexpr (Flip) rd += wx * loadHigh(q);
+            }
+            aV += wr * r0;
+            if constexpr (Affine) {
+                aB0 += wr * r1;
+                aB1 += (wr * oy) * r0;
+                if constexpr (dim == 3) aB2 += (wr * oz) * r0;
+            }
+            if constexpr (Flip) aD += wr * rd;
+            if constexpr (Grad) {
+                aL0 += wr * r2;
+                aL1 += dy * r0;
+                if constexpr (dim == 3) aL2 += dz * r0;
+            }
+        };
+        if constexpr (dim == 2) {
+            for (int b = 0; b < W; ++b)
+                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - s.fx[1], 0.0);
+        } else {
+            for (int c = 0; c < W; ++c) {
+                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+                for (int b = 0; b < W; ++b)
+                    row(o[1][b] + o[2][c], s.w[1][b] * wz, s.dw[1][b] * wz, s.w[1][b] * dz,
+                        b - s.fx[1], oz);
             }
         }
-        auto vec = [](const Double4& x) { return Vec<dim>(x[0], x[1], x[2]); };
+        auto vec = [](const Double4& x) {
+            Vec<dim> r;
+            for (int d = 0; d < dim; ++d)
+                r[d] = x[d];
+            return r;
+        };
+        const Double4* aB[3] = {&aB0, &aB1, &aB2};
+        const Double4* aL[3] = {&aL0, &aL1, &aL2};
         vPic = vec(aV);
         if constexpr (Flip) dv = vec(aD);
         if constexpr (Affine) {
             // B = Σ w v_i (x_i - x_p)ᵀ/h: column 0 is Σ w v_i (a - fx).
             B.col(0) = vec(aB0) - s.fx[0] * vPic;
-            B.col(1) = vec(aB1);
-            B.col(2) = vec(aB2);
+            for (int d = 1; d < dim; ++d)
+                B.col(d) = vec(*aB[d]);
         }
-        if constexpr (Grad) {
-            L.col(0) = vec(aL0);
-            L.col(1) = vec(aL1);
-            L.col(2) = vec(aL2);
-        }
+        if constexpr (Grad)
+            for (int d = 0; d < dim; ++d)
+                L.col(d) = vec(*aL[d]);
     }
 
     /// Visit the stencil of one particle as nested loops (x fastest):
@@ -342,14 +353,13 @@ private:
 
     template <bool Grad, bool Flip>
     GatherStats gatherImpl(Particles<dim>& p, Grid<dim>& g, double dt) {
-        if constexpr (dim == 3)
-            forActiveLines(g, [&g](Index k, NodeLine& q) {
-                for (int d = 0; d < dim; ++d) {
-                    q.v[d] = g.v[k][d];
-                    if constexpr (Flip) q.v[4 + d] = g.v[k][d] - g.vOld[k][d];
-                }
-                q.v[3] = q.v[7] = 0.0;
-            });
+        forActiveLines(g, [&g](Index k, NodeLine& q) {
+            q = NodeLine{};
+            for (int d = 0; d < dim; ++d) {
+                q.v[d] = g.v[k][d];
+                if constexpr (Flip) q.v[4 + d] = g.v[k][d] - g.vOld[k][d];
+            }
+        });
         const NodeLine* lines = g.lines.data();
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();
@@ -364,18 +374,7 @@ private:
             Vec<dim> dv = Vec<dim>::Zero();
             Mat<dim> B = Mat<dim>::Zero();
             Mat<dim> L = Mat<dim>::Zero();
-            if constexpr (dim == 3) {
-                gatherLines3<Grad, Flip>(s, lines, vPic, dv, B, L);
-            } else {
-                forStencil(
-                    s, [&](Index node, double wgt, const Vec<dim>& grad, const Vec<dim>& offset) {
-                        const Vec<dim>& vi = g.v[node];
-                        vPic += wgt * vi;
-                        if constexpr (Flip) dv += wgt * (vi - g.vOld[node]);
-                        if constexpr (Affine) B.noalias() += (wgt * vi) * offset.transpose();
-                        if constexpr (Grad) L.noalias() += vi * grad.transpose();
-                    });
-            }
+            gatherLines<Grad, Flip>(s, lines, vPic, dv, B, L);
             // New v and x from registers: the checks below do not re-read the stores.
             Vec<dim> v = vPic;
             if constexpr (Affine)

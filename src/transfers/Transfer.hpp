@@ -59,8 +59,7 @@ public:
 
     /// G2P: velocity by the FLIP/PIC blend [000 Eq. 15] or APIC [000 Eq. 17], position
     /// [000 Eq. 16], and (with `withGradient`, USL) L_p from the updated velocity.
-    virtual GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt,
-                               bool withGradient) = 0;
+    virtual GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt, bool withGradient) = 0;
 
     /// Build the transfer selected in system/mpmSchemes; `particleHalfWidth` is GIMP's l_p / h.
     static std::unique_ptr<Transfer> create(const Dictionary& schemes, double particleHalfWidth);
