@@ -149,6 +149,23 @@ private:
                 o[d][a] = grid_->axisOffset(d, s.base[d] + a);
     }
 
+    /// Visit the x-rows of a particle's stencil: row(first node index, weight w_r,
+    /// ∂_y w_r, ∂_z w_r, (y_r − y_p)/h, (z_r − z_p)/h) with w_r = w_y w_z (2D: w_y, no z).
+    template <class Row>
+    static inline void forRows(const Stencil& s, const Index (&o)[dim][W], Row&& row) {
+        if constexpr (dim == 2) {
+            for (int b = 0; b < W; ++b)
+                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - s.fx[1], 0.0);
+        } else {
+            for (int c = 0; c < W; ++c) {
+                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+                for (int b = 0; b < W; ++b)
+                    row(o[1][b] + o[2][c], s.w[1][b] * wz, s.dw[1][b] * wz, s.w[1][b] * dz,
+                        b - s.fx[1], oz);
+            }
+        }
+    }
+
     /// G2P of one particle from the node lines [v, 0 | v − v_old, 0] (the second half with
     /// FLIP only), the stencil sums factored per x-row: r0 = Σ_a w_x v_i, r1 = Σ_a a w_x v_i,
     /// r2 = Σ_a w'_x v_i, rd = Σ_a w_x (v_i − v_old,i), each one 4-lane vector (v padded); a
@@ -185,17 +202,7 @@ private:
                 if constexpr (dim == 3) aL2 += dz * r0;
             }
         };
-        if constexpr (dim == 2) {
-            for (int b = 0; b < W; ++b)
-                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - s.fx[1], 0.0);
-        } else {
-            for (int c = 0; c < W; ++c) {
-                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
-                for (int b = 0; b < W; ++b)
-                    row(o[1][b] + o[2][c], s.w[1][b] * wz, s.dw[1][b] * wz, s.w[1][b] * dz,
-                        b - s.fx[1], oz);
-            }
-        }
+        forRows(s, o, row);
         auto vec = [](const Double4& x) {
             Vec<dim> r;
             for (int d = 0; d < dim; ++d)
@@ -287,17 +294,7 @@ private:
                 if constexpr (Stress) storeHigh(q, loadHigh(q) + wx * f0 + s.dw[0][a] * f1);
             }
         };
-        if constexpr (dim == 2) {
-            for (int b = 0; b < W; ++b)
-                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - s.fx[1], 0.0);
-        } else {
-            for (int c = 0; c < W; ++c) {
-                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
-                for (int b = 0; b < W; ++b)
-                    row(o[1][b] + o[2][c], s.w[1][b] * wz, s.dw[1][b] * wz, s.w[1][b] * dz,
-                        b - s.fx[1], oz);
-            }
-        }
+        forRows(s, o, row);
     }
 
     /// Visit the lines of the active blocks, block by block in parallel: fn(node, line).
