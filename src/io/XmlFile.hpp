@@ -33,7 +33,7 @@ void removeQuietly(const std::filesystem::path& file);
 /// Throw std::runtime_error("cannot write <file>: <why>").
 [[noreturn]] void cannotWrite(const std::filesystem::path& file, const std::string& why = {});
 
-/// Write `data` with a VTK XML writer in mpmFoam's format — appended raw binary, zlib level 1,
+/// Write `data` with a VTK XML writer in mpmFoam's format — appended raw binary, LZ4 (fastest),
 /// UInt64 headers — to `<file>.tmp`, then rename it to `file`, so that a reader (ParaView)
 /// never sees a half-written file. Throws std::runtime_error naming the file on failure.
 void writeXmlAtomically(vtkXMLWriter& writer, vtkDataObject* data,

@@ -134,13 +134,13 @@ TEST_F(ParticleFileTest, RoundTripWithoutArrays) {
     EXPECT_TRUE(back.arrays.empty());
 }
 
-TEST_F(ParticleFileTest, HeaderIsAppendedZlibUInt64) {
+TEST_F(ParticleFileTest, HeaderIsAppendedLz4UInt64) {
     const fs::path file = dir_ / "particles.vtu";
     mpm::io::writeVtu(file, makeCloud(50));
     const std::string header = xmlHeader(file);
     EXPECT_NE(header.find("type=\"UnstructuredGrid\""), std::string::npos) << header;
     EXPECT_NE(header.find("header_type=\"UInt64\""), std::string::npos) << header;
-    EXPECT_NE(header.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos) << header;
+    EXPECT_NE(header.find("compressor=\"vtkLZ4DataCompressor\""), std::string::npos) << header;
     EXPECT_NE(header.find("format=\"appended\""), std::string::npos) << header;
     EXPECT_EQ(header.find("format=\"ascii\""), std::string::npos) << header;
     EXPECT_EQ(header.find("format=\"binary\""), std::string::npos) << header;
