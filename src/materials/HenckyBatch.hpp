@@ -19,7 +19,6 @@ template <int Lanes> struct HenckyBatch {
     alignas(64) double lam[3][Lanes]; ///< its eigenvalues
     alignas(64) double q[9][Lanes];   ///< its eigenvectors, q[3 i + j] = Q_ij
     alignas(64) double jInv[Lanes];   ///< 1/J = V⁰/V
-    alignas(64) double rho[Lanes];    ///< m/V [kg/m³]
 
     /// Load ids[first …] (at most Lanes of them), form the trial bᵉ and decompose it.
     template <int dim>
@@ -38,7 +37,6 @@ template <int Lanes> struct HenckyBatch {
             be[0][l] = b(0, 0), be[1][l] = b(1, 1), be[2][l] = b(2, 2);
             be[3][l] = b(0, 1), be[4][l] = b(0, 2), be[5][l] = b(1, 2);
             jInv[l] = p.volume0[i] / p.volume[i];
-            rho[l] = p.mass[i] / p.volume[i];
         }
         // bᵉ ← f bᵉ fᵀ: m = f bᵉ, then the upper triangle of m fᵀ.
 #pragma omp simd

@@ -77,7 +77,9 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
         HenckyBatch<Lanes> h;
         h.trial(p, ids, b * Lanes, dt);
         const double* jInv = h.jInv;
-        const double* rho = h.rho;
+        alignas(64) double rho[Lanes]; // m/V [kg/m³], for the trans-phase relation
+        for (int l = 0; l < Lanes; ++l)
+            rho[l] = p.mass[h.idx[l]] / p.volume[h.idx[l]];
         alignas(64) double tau[3][Lanes], lamNew[3][Lanes], dGamma[Lanes];
         alignas(64) double state[Lanes]; // 0: elastic (trial bᵉ), 1: plastic, 2: stress-free
 #pragma omp simd

@@ -58,7 +58,8 @@ public:
     virtual void velocityGradient(Particles<dim>& p, const Grid<dim>& g) = 0;
 
     /// G2P: velocity by the FLIP/PIC blend [000 Eq. 15] or APIC [000 Eq. 17], position
-    /// [000 Eq. 16], and (with `withGradient`, USL) L_p from the updated velocity.
+    /// [000 Eq. 16], and (with `withGradient`, USL) L_p from the updated velocity. Reads the
+    /// grid's velocities through its scratch lines (Grid::lines), which it overwrites.
     virtual GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt, bool withGradient) = 0;
 
     /// Build the transfer selected in system/mpmSchemes; `particleHalfWidth` is GIMP's l_p / h.
