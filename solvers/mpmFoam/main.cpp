@@ -2,28 +2,40 @@
 // mpmFoam: explicit material point method for granular media, run from an OpenFOAM-style case.
 #include "case/Time.hpp"
 #include "core/Log.hpp"
+#include "parallel/Comm.hpp"
 #include "solver/Application.hpp"
 #include "solver/Simulation.hpp"
 
 #include <omp.h>
 
+#include <cstring>
 #include <iomanip>
 
 using namespace mpm;
 
 int main(int argc, char* argv[]) {
+    bool parallel = false; // -parallel: MPI before anything else reads the command line
+    for (int i = 1; i < argc; ++i)
+        parallel = parallel || std::strcmp(argv[i], "-parallel") == 0;
+    Comm comm = parallel ? Comm::initWorld(argc, argv) : Comm();
+    quietLog(!comm.master()); // OpenFOAM's master-only log
     const Application app(argc, argv, "mpmFoam",
                           "Explicit MPM for soils and granular media (2D and 3D).",
                           {{"-dry-run", "check the case and take one step; write nothing"},
-                           {"-noFunctionObjects", "do not run controlDict's functions"}});
-    return app.run([&] {
-        const Case cs(app.caseDir());
+                           {"-noFunctionObjects", "do not run controlDict's functions"},
+                           {"-parallel", "run decomposed (mpirun -np N mpmFoam -parallel)"}});
+    const int rc = app.run([&] {
+        const Case root(app.caseDir());
+        const Case cs = comm.parallel() ? root.processor(comm.rank()) : root;
         Time time(cs);
+        if (comm.parallel()) time.setAgreement([&comm](bool x) { return comm.any(x); });
         const RunOptions options{app.has("-dry-run"), app.has("-noFunctionObjects")};
-        auto sim = Simulation::create(cs, options);
+        auto sim = Simulation::create(cs, options, comm);
         sim->start(time);
         Time::installSignalHandlers();
-        log() << "Starting time loop at t = " << time.value() << " s with " << sim->numParticles()
+        const long points = sim->numParticles();
+        if (comm.parallel()) log() << "Parallel run on " << comm.size() << " ranks\n";
+        log() << "Starting time loop at t = " << time.value() << " s with " << points
               << " particles (" << sim->dimension() << "D)\n\n";
 
         ProgressMeter progress(time);
@@ -47,4 +59,7 @@ int main(int argc, char* argv[]) {
         reportPeakMemory(log());
         log() << "\nEnd\n";
     });
+    // A rank that failed alone would leave the others waiting in a collective: stop them all.
+    if (rc != 0 && comm.size() > 1) comm.abort(rc);
+    return rc;
 }

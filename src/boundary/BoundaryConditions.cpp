@@ -266,7 +266,9 @@ template <int dim> void BoundaryConditions<dim>::groupByBlock(Patch& p) const {
     p.start.push_back(static_cast<Index>(p.byBlock.size()));
 }
 
-template <int dim> void BoundaryConditions<dim>::selectActive(const Grid<dim>& g) {
+template <int dim>
+void BoundaryConditions<dim>::selectActive(const Grid<dim>& g,
+                                           const std::function<bool(Index)>& take) {
     for (Face& face : faces_) {
         if (face.periodic) continue;
         for (Patch& p : face.patches) {
@@ -276,7 +278,7 @@ template <int dim> void BoundaryConditions<dim>::selectActive(const Grid<dim>& g
             const Index nb = static_cast<Index>(p.blocks.size());
             for (Index k = 0; k < nb; ++k) {
                 if (k == p.ownerBlocks) p.liveOwners = static_cast<Index>(p.live.size());
-                if (g.isActive(p.blocks[k]))
+                if (take(p.blocks[k]))
                     p.live.insert(p.live.end(), p.byBlock.begin() + p.start[k],
                                   p.byBlock.begin() + p.start[k + 1]);
             }

@@ -8,6 +8,7 @@
 #include "particles/Particles.hpp"
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -59,7 +60,12 @@ public:
     /// constrainUpdate (after Grid::activate): the walls' work follows the material, not the
     /// size of the faces. Wall contact of the nodes whose block the material left is cleared
     /// (constrainUpdate would have found no mass there).
-    void selectActive(const Grid<dim>& g);
+    void selectActive(const Grid<dim>& g) {
+        selectActive(g, [&g](Index b) { return g.isActive(b); });
+    }
+    /// The same over the blocks `take(b)` accepts: a parallel run's active blocks this rank owns
+    /// (every node is constrained by its owner, its reaction counted once).
+    void selectActive(const Grid<dim>& g, const std::function<bool(Index)>& take);
 
     /// Some face has a unilateral condition (at some time): wall contact is state.
     bool hasUnilateral() const { return hasUnilateral_; }

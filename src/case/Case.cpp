@@ -18,18 +18,36 @@ Case::Case(fs::path root) : root_(std::move(root)) {
                          "system/controlDict, constant/grid, ...)");
 }
 
+Case Case::processor(int rank) const {
+    Case c;
+    c.global_ = globalRoot();
+    c.root_ = c.global_ / ("processor" + std::to_string(rank));
+    if (!fs::is_directory(c.root_))
+        throw InputError(c.root_.string(), 0, "",
+                         "no such processor directory: run decomposePar first (with "
+                         "numberOfSubdomains equal to mpirun's -np)");
+    return c;
+}
+
+fs::path Case::locate(const std::string& relative) const {
+    for (const fs::path& dir : {root_, global_}) {
+        if (dir.empty()) continue;
+        if (fs::is_regular_file(dir / relative)) return dir / relative;
+        if (fs::is_regular_file(dir / (relative + ".yaml"))) return dir / (relative + ".yaml");
+    }
+    return root_ / relative;
+}
+
 bool Case::exists(const std::string& relative) const {
-    return fs::is_regular_file(root_ / relative) ||
-           fs::is_regular_file(root_ / (relative + ".yaml"));
+    return fs::is_regular_file(locate(relative));
 }
 
 Dictionary Case::read(const std::string& relative) const {
-    fs::path p = root_ / relative;
-    if (!fs::exists(p) && fs::exists(root_ / (relative + ".yaml")))
-        p = root_ / (relative + ".yaml");
+    const fs::path p = locate(relative);
     if (!fs::is_regular_file(p)) throw InputError(relative, 0, "", "required file is missing");
     Dictionary d = Dictionary::fromFile(p, relative);
-    d.setBaseDirectory(root_); // relative file entries (level sets, meshes) are case-relative
+    // Relative file entries (level sets, meshes) are relative to the (root) case.
+    d.setBaseDirectory(globalRoot());
     return d;
 }
 

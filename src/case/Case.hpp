@@ -13,8 +13,15 @@ namespace mpm {
 class Case {
 public:
     explicit Case(std::filesystem::path root);
+    /// The case of rank `rank` of a parallel run (OpenFOAM's processor case): its time
+    /// directories live in `<root>/processor<rank>/`, which must exist (decomposePar made it);
+    /// read() and exists() look there first and then in the root case, so system/ and constant/
+    /// are shared. An InputError when the directory is missing.
+    Case processor(int rank) const;
 
     const std::filesystem::path& root() const { return root_; }
+    /// The root of the whole case (root() itself except for a processor case).
+    const std::filesystem::path& globalRoot() const { return global_.empty() ? root_ : global_; }
     std::filesystem::path path(const std::string& relative) const { return root_ / relative; }
 
     /// Read `relative` (e.g. "system/controlDict"); messages name it by that relative path.
@@ -26,7 +33,12 @@ public:
     std::vector<std::pair<double, std::string>> timeDirectories() const;
 
 private:
+    Case() = default;
+    /// The file `relative` names: in root(), else (processor case) in the global root.
+    std::filesystem::path locate(const std::string& relative) const;
+
     std::filesystem::path root_;
+    std::filesystem::path global_; ///< the root case of a processor case; empty otherwise
 };
 
 /// OpenFOAM's time-directory name: %g with `precision` significant digits ("0.05", "1e-05").

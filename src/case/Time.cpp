@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 fs::path controlDictPath(const Case& cs) {
-    const fs::path p = cs.path("system/controlDict");
+    const fs::path p = cs.globalRoot() / "system/controlDict";
     return fs::exists(p) ? p : fs::path(p.string() + ".yaml");
 }
 
@@ -121,26 +121,29 @@ std::string Time::name() const {
 }
 
 void Time::pollRequests() {
-    if (gWriteNow) {
-        gWriteNow = 0;
+    // Each request is seen by this process; a parallel run acts on it when any rank saw it
+    // (agree_), so that every rank writes and stops at the same step.
+    const bool writeNow = agree_(gWriteNow != 0);
+    const bool stopNow = agree_(gStopNow != 0);
+    gWriteNow = gStopNow = 0;
+    if (writeNow) {
         writeNowPending_ = true;
         log() << "Signal: write at the end of this step\n";
     }
-    if (gStopNow) {
-        gStopNow = 0;
+    if (stopNow) {
         stopNow_ = stopWrite_ = true;
         log() << "Signal: write and stop\n";
     }
-    const fs::path stopFile = case_.path("stop");
+    const fs::path stopFile = case_.globalRoot() / "stop";
     std::error_code ec;
-    if (fs::exists(stopFile, ec)) {
+    if (agree_(fs::exists(stopFile, ec))) {
         fs::remove(stopFile, ec);
         stopNow_ = stopWrite_ = true;
         log() << "Found " << stopFile.string() << " (removed): write and stop\n";
     }
     if (runTimeModifiable_) {
         const auto stamp = fs::last_write_time(controlDictPath(case_), ec);
-        if (!ec && stamp != dictStamp_) {
+        if (agree_(!ec && stamp != dictStamp_)) {
             dictStamp_ = stamp;
             try {
                 // Parse into a fresh Time first, so that a broken file changes nothing.

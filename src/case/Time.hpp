@@ -5,6 +5,7 @@
 
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace mpm {
@@ -61,6 +62,10 @@ public:
     /// True after stop was requested (signal, stop file, stopAt writeNow/noWriteNow).
     bool stopping() const { return stopNow_; }
 
+    /// A parallel run: `anyRank(x)` is true when x is true on any rank (Comm::any). Stop and write
+    /// requests and a changed controlDict then take effect on every rank at the same step.
+    void setAgreement(std::function<bool(bool)> anyRank) { agree_ = std::move(anyRank); }
+
     /// Install SIGUSR1 (write now), SIGUSR2 and SIGTERM (write and stop) handlers.
     static void installSignalHandlers();
 
@@ -72,6 +77,7 @@ private:
 
     const Case& case_;
     Dictionary dict_;
+    std::function<bool(bool)> agree_ = [](bool x) { return x; };
     std::filesystem::file_time_type dictStamp_;
 
     std::string startFrom_ = "latestTime";

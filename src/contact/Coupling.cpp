@@ -273,10 +273,11 @@ void Coupling<dim>::declareState(Particles<dim>& p,
                 {coupled == 1 ? "contactSlip" : "contactSlip_" + bodies[b]->name()}, 0.0);
 }
 
-template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p) {
+template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p, const Comm& comm) {
     maxRadius_ = 0;
     for (double v0 : p.volume0)
         maxRadius_ = std::max(maxRadius_, radius(v0));
+    maxRadius_ = comm.max(maxRadius_);
 }
 
 template <int dim> double Coupling<dim>::stableDeltaT(double lightestMass, double maxWave) const {

@@ -4,6 +4,7 @@
 #include "boundary/PeriodicLattice.hpp"
 #include "contact/CouplingLaw.hpp"
 #include "grid/Grid.hpp"
+#include "parallel/Comm.hpp"
 #include "particles/BlockSort.hpp"
 #include "particles/Particles.hpp"
 #include "rigid/RigidBody.hpp"
@@ -51,8 +52,8 @@ public:
                       const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies);
 
     /// Record the largest coupling radius of the particles (call after seeding or restart;
-    /// V⁰ never changes, removal only lowers it).
-    void setParticles(const Particles<dim>& p);
+    /// V⁰ never changes, removal only lowers it); over all ranks of `comm`.
+    void setParticles(const Particles<dim>& p, const Comm& comm = serialComm());
 
     /// Coupling radius r_p = (V_p⁰)^(1/dim) [000 §3.2] [m].
     static double radius(double v0) { return dim == 3 ? std::cbrt(v0) : std::sqrt(v0); }

@@ -14,8 +14,10 @@ namespace fs = std::filesystem;
 TimeDirectoryWriter::TimeDirectoryWriter(const Case& cs, std::vector<std::string> indices)
     : case_(cs), names_(std::move(indices)), pvd_(names_.size()) {}
 
-void TimeDirectoryWriter::write(Time& time, const std::function<void(const fs::path&)>& fill,
-                                const std::vector<std::string>& files) {
+std::vector<std::string>
+TimeDirectoryWriter::write(Time& time, const std::function<void(const fs::path&)>& fill,
+                           const std::vector<std::string>& files,
+                           const std::vector<std::string>* purge) {
     const std::string name = time.name();
     const fs::path dir = case_.path(name);
     const fs::path tmp = case_.path("." + name + ".writing");
@@ -31,11 +33,13 @@ void TimeDirectoryWriter::write(Time& time, const std::function<void(const fs::p
             pvd_[k] = std::make_unique<PvdIndex>(case_.path(names_[k] + ".pvd"), time.value());
         pvd_[k]->add(time.value(), name + "/" + files[k]);
     }
-    for (const std::string& old : time.wrote()) {
-        fs::remove_all(case_.path(old));
+    const std::vector<std::string> old = purge ? *purge : time.wrote();
+    for (const std::string& o : old) {
+        fs::remove_all(case_.path(o));
         for (std::size_t k = 0; k < names_.size(); ++k)
-            pvd_[k]->remove(old + "/" + files[k]);
+            pvd_[k]->remove(o + "/" + files[k]);
     }
+    return old;
 }
 
 std::string restartDirectory(const Case& cs, const Time& time) {

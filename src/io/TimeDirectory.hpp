@@ -25,8 +25,13 @@ public:
 
     /// Write the current time of `time`: `fill(folder)` writes every file into `folder`;
     /// `files[k]` is the file of series k inside the time directory (e.g. "particles.vtu").
-    void write(Time& time, const std::function<void(const std::filesystem::path&)>& fill,
-               const std::vector<std::string>& files);
+    /// Records the write in `time` (Time::wrote) and purges the directories it names, or, when
+    /// `purge` is given (a second writer of the same time: the root of a parallel run), purges
+    /// those. Returns the directories purged.
+    std::vector<std::string> write(Time& time,
+                                   const std::function<void(const std::filesystem::path&)>& fill,
+                                   const std::vector<std::string>& files,
+                                   const std::vector<std::string>* purge = nullptr);
 
 private:
     const Case& case_;

@@ -41,12 +41,13 @@ protected:
         const auto massOf = [&](Index i) {
             return material_ < 0 || p.material[i] == material_ ? p.mass[i] : 0.0;
         };
-        const double mass = deterministicSum(n, massOf);
-        std::vector<double> row{mass};
+        std::vector<double> row{deterministicSum(n, massOf)};
         for (int d = 0; d < dim; ++d)
             row.push_back(deterministicSum(n, [&](Index i) { return massOf(i) * p.x[i][d]; }));
         for (int d = 0; d < dim; ++d)
             row.push_back(deterministicSum(n, [&](Index i) { return massOf(i) * p.v[i][d]; }));
+        s.comm.sum(row.data(), static_cast<int>(row.size())); // every rank's points
+        const double mass = row[0];
         for (std::size_t k = 1; k < row.size(); ++k)
             row[k] = mass > 0 ? row[k] / mass : 0.0;
         return row;

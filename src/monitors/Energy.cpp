@@ -32,22 +32,25 @@ protected:
             return s.materials[p.material[i]]->strainEnergy(p, i);
         });
         double bodyKinetic = 0;
+        double sums[3] = {kinetic, strain, 0.0}; // this rank's points, then every rank's
         for (const auto& b : s.bodies)
             bodyKinetic += b->kineticEnergy();
-        const double k = kinetic + bodyKinetic;
         if (!s.acceleration.isConstant()) {
+            s.comm.sum(sums, 2);
+            const double k = sums[0] + bodyKinetic;
             const double g = -s.accelerationWork;
-            return {k, strain, g, k + strain + g};
+            return {k, sums[1], g, k + sums[1] + g};
         }
         const Vec<dim> gravity = s.acceleration.at(s.time);
-        const double gravitational = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
-            return -p.mass[i] * gravity.dot(p.x[i]);
-        });
+        sums[2] = deterministicSum(static_cast<Index>(p.size()),
+                                   [&](Index i) { return -p.mass[i] * gravity.dot(p.x[i]); });
+        s.comm.sum(sums, 3);
+        const double k = sums[0] + bodyKinetic;
         double bodyGravitational = 0;
         for (const auto& b : s.bodies)
             bodyGravitational -= b->mass() * gravity.dot(b->position());
-        const double g = gravitational + bodyGravitational;
-        return {k, strain, g, k + strain + g};
+        const double g = sums[2] + bodyGravitational;
+        return {k, sums[1], g, k + sums[1] + g};
     }
 };
 

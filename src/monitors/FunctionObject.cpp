@@ -16,11 +16,13 @@ FunctionObject<dim>::FunctionObject(const Dictionary& dict, std::string name)
                         : dict.getIntOr("writeInterval", 1, Bounds::closed(1, 2e9));
 }
 
-template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& time) {
-    const auto dir = cs.path("postProcessing") / name_ / timeName(time.value(), 6);
-    std::filesystem::create_directories(dir);
-    out_.open(dir / (name_ + ".dat"));
-    if (!out_) throw RunError("cannot write " + (dir / (name_ + ".dat")).string());
+template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& time, bool write) {
+    if (write) {
+        const auto dir = cs.path("postProcessing") / name_ / timeName(time.value(), 6);
+        std::filesystem::create_directories(dir);
+        out_.open(dir / (name_ + ".dat"));
+        if (!out_) throw RunError("cannot write " + (dir / (name_ + ".dat")).string());
+    }
     precision_ = std::max(time.writePrecision(), 10);
     // The index execute() compares with (a restarted run resumes the same schedule).
     lastIndex_ = byTime_ ? static_cast<long>(std::floor(time.value() / std::max(interval_, 1e-300)))
@@ -28,6 +30,8 @@ template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& ti
 }
 
 template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, const Time& time) {
+    const std::vector<double> row = values(s); // collective in a parallel run
+    if (!out_.is_open()) return;               // ranks other than 0 of a parallel run
     if (!headerDone_) {
         out_ << "# " << name_ << '\n';
         for (const auto& l : headerLines(s))
@@ -39,7 +43,7 @@ template <int dim> void FunctionObject<dim>::executeNow(const State<dim>& s, con
         headerDone_ = true;
     }
     out_ << std::setprecision(precision_) << std::scientific << time.value();
-    for (double v : values(s))
+    for (double v : row)
         out_ << ' ' << v;
     out_ << '\n';
     out_.flush();

@@ -29,8 +29,10 @@ public:
     /// Check the entries against the simulation (named bodies exist, …) and record initial
     /// values; called for every function object before any of them writes, and in -dry-run.
     void prepare(const State<dim>& s, const Time& time) { initialise(s, time); }
-    /// Open the output file (a restarted run opens a new <startTime> folder).
-    void open(const Case& cs, const Time& time);
+    /// Open the output file (a restarted run opens a new <startTime> folder) and start the
+    /// schedule. `write` false (ranks other than 0 of a parallel run): the schedule only; the
+    /// values are computed on every rank (their reductions are collective), written by rank 0.
+    void open(const Case& cs, const Time& time, bool write = true);
     /// Sample every step (sample()) and write a row if the schedule says so.
     void execute(const State<dim>& s, const Time& time);
     /// Execute now (the initial state).

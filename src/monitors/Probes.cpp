@@ -144,6 +144,7 @@ protected:
         for (Index c = 0; c < nChunks; ++c)
             for (std::size_t j = 0; j < sum.size(); ++j)
                 sum[j] += partial[static_cast<std::size_t>(c) * np * stride + j];
+        s.comm.sum(sum.data(), static_cast<int>(sum.size())); // every rank's points
 
         for (std::size_t k = 0; k < np; ++k)
             if (!(sum[k * stride] > 0) && !warned_[k]) {

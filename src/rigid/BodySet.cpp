@@ -209,6 +209,42 @@ template <int dim> void BodySet<dim>::read(const Case& cs, const std::string& ti
     if (contact_) readHistory(cs.read(timeDir + "/uniform/bodyContacts"));
 }
 
+template <int dim> void BodySet<dim>::sumForces(const Comm& comm) {
+    std::vector<double> ft;
+    for (const auto& b : bodies_) {
+        for (int d = 0; d < dim; ++d)
+            ft.push_back(b->force()[d]);
+        for (int d = 0; d < 3; ++d)
+            ft.push_back(b->torque()[d]);
+    }
+    comm.sum(ft.data(), static_cast<int>(ft.size()));
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const double* x = ft.data() + k * (dim + 3);
+        bodies_[k]->clearForces();
+        bodies_[k]->addForceAndTorque(Vec<dim>(Eigen::Map<const Vec<dim>>(x)),
+                                      Vec3(x[dim], x[dim + 1], x[dim + 2]));
+    }
+}
+
+template <int dim> std::vector<double> BodySet<dim>::twists() const {
+    std::vector<double> t(bodies_.size() * (dim + 3));
+    for (std::size_t k = 0; k < bodies_.size(); ++k)
+        bodies_[k]->twist(t.data() + k * (dim + 3));
+    return t;
+}
+
+template <int dim>
+void BodySet<dim>::sumTwistChanges(const Comm& comm, const std::vector<double>& before) {
+    std::vector<double> change = twists();
+    for (std::size_t k = 0; k < change.size(); ++k)
+        change[k] -= before[k];
+    comm.sum(change.data(), static_cast<int>(change.size()));
+    for (std::size_t k = 0; k < change.size(); ++k)
+        change[k] += before[k];
+    for (std::size_t k = 0; k < bodies_.size(); ++k)
+        bodies_[k]->setTwist(change.data() + k * (dim + 3));
+}
+
 template class BodySet<2>;
 template class BodySet<3>;
 

@@ -6,6 +6,7 @@
 #include "contact/BodyContact.hpp"
 #include "contact/CouplingLaw.hpp"
 #include "grid/Grid.hpp"
+#include "parallel/Comm.hpp"
 #include "rigid/RigidBody.hpp"
 
 #include <filesystem>
@@ -48,6 +49,13 @@ public:
     std::vector<std::unique_ptr<CouplingLaw<dim>>> takeCouplingLaws() { return std::move(laws_); }
 
     void clearForces();
+    /// A parallel run: every body's force and torque become the sum over the ranks (each rank
+    /// gathered its own points' coupling forces).
+    void sumForces(const Comm& comm);
+    /// Every body's twist (RigidBody::twist), concatenated.
+    std::vector<double> twists() const;
+    /// A parallel run: twist = before + Σ over the ranks of (this rank's twist − before).
+    void sumTwistChanges(const Comm& comm, const std::vector<double>& before);
     /// Periodic faces: move every moving body whose centre lies outside [lo, hi) along a periodic
     /// axis back by whole periods (PeriodicLattice::wrapPosition); orientation and velocities
     /// unchanged. Nothing without periodic faces.

@@ -84,6 +84,20 @@ public:
     /// point loses when it is projected out of the body.
     void applyImpulse(const Vec<dim>& J, const Vec<dim>& at);
     const Vec<dim>& force() const { return f_; }
+    /// Velocity and angular velocity (body axes) as dim + 3 numbers, and back: the state that
+    /// impulses change (a parallel run adds up the ranks' changes).
+    void twist(double* out) const {
+        for (int d = 0; d < dim; ++d)
+            out[d] = v_[d];
+        for (int d = 0; d < 3; ++d)
+            out[dim + d] = omegaBody_[d];
+    }
+    void setTwist(const double* in) {
+        for (int d = 0; d < dim; ++d)
+            v_[d] = in[d];
+        for (int d = 0; d < 3; ++d)
+            omegaBody_[d] = in[dim + d];
+    }
     const Vec3& torque() const { return torque_; }
 
     /// Advance pose and twist over dt with gravity g and the accumulated forces; `t` is the

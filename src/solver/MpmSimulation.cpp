@@ -4,6 +4,8 @@
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "io/ParticleIO.hpp"
+#include "io/PvtuFile.hpp"
+#include "parallel/Migration.hpp"
 #include "solver/GravityPreload.hpp"
 #include "solver/StateMeasures.hpp"
 
@@ -17,9 +19,9 @@ namespace mpm {
 
 template <int dim>
 MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
-                                  const Dictionary& gridDict)
-    : case_(cs), options_(options), grid_(gridDict), bc_(gridDict, grid_),
-      bodies_(cs, grid_, &bc_.lattice()),
+                                  const Dictionary& gridDict, const Comm& comm)
+    : case_(cs), global_(cs.globalRoot()), options_(options), comm_(comm), grid_(gridDict),
+      bc_(gridDict, grid_), bodies_(cs, grid_, &bc_.lattice()),
       writer_(cs, bodies_.empty() ? std::vector<std::string>{"particles"}
                                   : std::vector<std::string>{"particles", "rigidBodies"}) {
     gridDict.checkUnknownKeys();
@@ -67,6 +69,44 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
     schemes.checkUnknownKeys();
+    if (comm_.parallel()) setUpParallel();
+}
+
+template <int dim> void MpmSimulation<dim>::setUpParallel() {
+    // What the parallel step does not do yet is refused, not run wrongly (docs/parallel.md).
+    const auto refuse = [](const std::string& what) {
+        throw InputError("-parallel", 0, "", what + " is not available in parallel runs yet");
+    };
+    if (bc_.anyPeriodic()) refuse("a periodic face (constant/grid)");
+    if (!constraints_.empty()) refuse("constant/velocityConstraints");
+    if (fBar_) refuse("antiLocking: fBar (system/mpmSchemes)");
+    if (wallContactIsState()) refuse("a unilateral wall with a USF/MUSL stress update");
+    decomposition_ = std::make_unique<Decomposition<dim>>(
+        Decomposition<dim>::read(case_, "constant/decomposition", grid_.blocks()));
+    if (decomposition_->size() != comm_.size())
+        throw InputError(case_.root().string() + "/constant/decomposition", 0, "numberOfSubdomains",
+                         "the case is decomposed into " + std::to_string(decomposition_->size()) +
+                             " subdomains but the run has " + std::to_string(comm_.size()) +
+                             " ranks: run mpirun -np " + std::to_string(decomposition_->size()) +
+                             ", or decomposePar again");
+    halo_ = std::make_unique<GridHalo<dim>>(comm_, *decomposition_);
+    if (comm_.master())
+        rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(
+            global_, bodies_.empty() ? std::vector<std::string>{"particles"}
+                                     : std::vector<std::string>{"particles", "rigidBodies"});
+}
+
+template <int dim> void MpmSimulation<dim>::migrateParticles() {
+    auto timer = timer_(PhaseTimer::Comm);
+    if (migrate(particles_, grid_, *decomposition_, comm_, scratch_)) buildMaterialLists();
+}
+
+template <int dim>
+void MpmSimulation<dim>::failIfAny(bool bad, const std::string& phase, Index particle,
+                                   const std::string& what) {
+    if (!comm_.any(bad)) return;
+    if (bad) fail(phase, particle, what);
+    fail(phase, -1, "stopped: another rank failed (its message names the particle)");
 }
 
 template <int dim> void MpmSimulation<dim>::start(Time& time) {
@@ -78,10 +118,17 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         ParticleSeeder<dim> seeder(grid_, materials_, gravity_);
         seeder.seed(case_.read("constant/particles"), particles_);
         bc_.wrap(particles_);
+        if (decomposition_) keepOwned(particles_, grid_, *decomposition_, comm_.rank());
         preload_ = seeder.preload();
         time.setStart(time.startFrom() == "startTime" ? time.startTime() : 0.0, 0, 0.0);
     } else {
+        if (comm_.parallel() && comm_.broadcast(from) != from)
+            throw InputError(case_.root().string(), 0, "",
+                             "restart time " + from +
+                                 " differs from rank 0's: the processor "
+                                 "directories hold different times (remove the incomplete ones)");
         io::readParticles(case_, from, particles_, materials_.size());
+        if (decomposition_) migrate(particles_, grid_, *decomposition_, comm_, scratch_);
         time.readTimeDict(from);
         if (!bodies_.empty()) bodies_.read(case_, from);
         gravity_ = acceleration_->at(time.value());
@@ -97,21 +144,21 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         log() << "Restart from time " << from << " (" << particles_.size() << " particles)\n";
     }
     buildMaterialLists();
-    if (coupling_) coupling_->setParticles(particles_);
+    if (coupling_) coupling_->setParticles(particles_, comm_);
     transfer_ = Transfer<dim>::create(case_.read("system/mpmSchemes"), gimpHalfWidth());
     if (fresh && preload_.requested) gravityPreload();
 
-    maxSpeed_ = maxSpeed(particles_, bodies_);
+    maxSpeed_ = comm_.max(maxSpeed(particles_, bodies_));
     const auto& m = particles_.mass; // restarting from an empty file is allowed
-    lightestMass_ = m.empty() ? 1e300 : *std::min_element(m.begin(), m.end());
+    lightestMass_ = comm_.min(m.empty() ? 1e300 : *std::min_element(m.begin(), m.end()));
     const std::string limit = stepLimit();
     log() << "Stable deltaT: " << criticalDeltaT() << " s, limit " << limit << "\n";
     time.checkFixedDeltaT(criticalDeltaT(), limit);
     std::array<bool, 3> periodic{};
     for (int d = 0; d < dim; ++d)
         periodic[d] = bc_.periodic(d);
-    energyBudget_ =
-        energyBudget(particles_, materials_, bodies_, *acceleration_, gravity_, grid_, periodic);
+    energyBudget_ = energyBudget(particles_, materials_, bodies_, *acceleration_, gravity_, grid_,
+                                 periodic, comm_);
 
     if (!options_.noFunctionObjects) functions_ = FunctionObject<dim>::createAll(time.dict());
     for (auto& f : functions_)
@@ -119,7 +166,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     snapshot();
     if (options_.dryRun) return;
     for (auto& f : functions_)
-        f->open(case_, time);
+        f->open(global_, time, comm_.master());
     if (fresh) {
         write();
         for (auto& f : functions_)
@@ -129,10 +176,18 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
 
 template <int dim> double MpmSimulation<dim>::gimpHalfWidth() const {
     // GIMP's particle half-width l_p = ½ V_p^(1/dim), in cell units, from the mean seeding volume.
-    double meanSize = 0;
+    // The sum in fixed point (units of 2⁻⁵² h): integer sums are exact, so l_p is the same for
+    // any order of the points, on any number of threads or ranks and after a restart (GIMP
+    // weights at the support's edge are that sensitive: docs/parallel.md).
+    __extension__ using Int128 = __int128;
+    Int128 sum = 0;
     for (double v0 : particles_.volume0)
-        meanSize += std::pow(v0, 1.0 / dim);
-    return 0.5 * meanSize / static_cast<double>(particles_.size()) * grid_.invH();
+        sum += std::llround(std::ldexp(std::pow(v0, 1.0 / dim) * grid_.invH(), 52));
+    Int128 total = 0;
+    for (const Int128 part : comm_.gather(sum))
+        total += part;
+    const double n = static_cast<double>(comm_.sum(static_cast<Index>(particles_.size())));
+    return 0.5 * std::ldexp(static_cast<double>(total), -52) / n;
 }
 
 template <int dim> void MpmSimulation<dim>::gravityPreload() {
@@ -154,6 +209,7 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     damping_ = savedDamping;
     preloading_ = false;
     timer_.reset();
+    if (halo_) halo_->resetBytes();
 }
 
 template <int dim> void MpmSimulation<dim>::buildMaterialLists() {
@@ -206,7 +262,7 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
     const bool varyingG = !acceleration_->isConstant() && !preloading_;
     if (!preloading_) gravity_ = acceleration_->at(time_->value() - 0.5 * dt); // t + Δt/2
     sortAndComputeWeights();
-    const Vec<dim> moment0 = varyingG ? massMoment(particles_, bodies_) : Vec<dim>::Zero();
+    const Vec<dim> moment0 = varyingG ? massMoment(particles_, bodies_, comm_) : Vec<dim>::Zero();
     if (withBodies) computeCouplingForces(dt);
     particleToGrid();
     order_->afterParticleToGrid(*this, dt); // USF: L, stress and internal force
@@ -219,7 +275,8 @@ template <int dim> void MpmSimulation<dim>::step(double dt) {
         checkBodies();
     }
     // Work of a time-varying g: g(t + Δt/2)·Σ m Δx with the displacements of the step.
-    if (varyingG) accelerationWork_ += gravity_.dot(massMoment(particles_, bodies_) - moment0);
+    if (varyingG)
+        accelerationWork_ += gravity_.dot(massMoment(particles_, bodies_, comm_) - moment0);
     timer_.stepDone(PhaseTimer::now() - t0);
     if (timer_.steps() % 20 == 0) snapshot();
 }
@@ -234,8 +291,9 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
             buildMaterialLists();
             removed_ += left;
         }
+    if (decomposition_) migrateParticles();
     const Index outside = sort_.update(particles_, grid_);
-    if (outside >= 0) fail("sort", outside, "left the grid");
+    failIfAny(outside >= 0, "sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
     // steps) store the particles in block order, for locality in P2G and G2P.
     if ((preloading_ ? preloadIndex_ : time_->index()) % ReorderInterval == 0) {
@@ -251,18 +309,35 @@ template <int dim> void MpmSimulation<dim>::computeCouplingForces(double dt) {
     bodies_.clearForces();
     coupling_->computeForces(particles_, bodies_.bodies(), waveOf_, criticalDensityOf_, sort_,
                              grid_, dt);
+    if (comm_.parallel()) bodies_.sumForces(comm_); // every rank's points push the bodies
 }
 
 template <int dim> void MpmSimulation<dim>::particleToGrid() {
     auto timer = timer_(PhaseTimer::P2G);
     std::vector<Index> blocks = sort_.activeNodeBlocks();
     bc_.closeActiveBlocks(blocks);
+    if (halo_) {
+        auto comm = timer_(PhaseTimer::Comm);
+        blocks = halo_->exchangeBlocks(blocks);
+    }
     grid_.activate(std::move(blocks)); // zero, and the sparse grid follows the material
-    bc_.selectActive(grid_);
+    if (decomposition_)                // the conditions act on the nodes this rank updates
+        bc_.selectActive(grid_, [&](Index b) {
+            return grid_.isActive(b) && decomposition_->owner(b) == comm_.rank();
+        });
+    else
+        bc_.selectActive(grid_);
     const std::vector<Index>& activeBlocks = grid_.activeBlocks();
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
+    if (halo_) {
+        auto comm = timer_(PhaseTimer::Comm);
+        if (order_->forceWithMomentum())
+            halo_->sum(grid_.mass, grid_.momentum, grid_.force);
+        else
+            halo_->sum(grid_.mass, grid_.momentum);
+    }
     // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
     bc_.fold(grid_, activeBlocks, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
     if (!constraints_.empty()) markConstrainedNodes();
@@ -293,12 +368,16 @@ void MpmSimulation<dim>::applyVelocityConstraints(NodeArray<Vec<dim>>& v, double
 
 template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
     auto timer = timer_(PhaseTimer::Grid);
-    grid_.forEachNode(grid_.activeBlocks(), [this](Index node) {
+    grid_.forEachNode(updateBlocks(), [this](Index node) {
         const double m = grid_.mass[node];
         grid_.vOld[node] = m > 0 ? Vec<dim>(grid_.momentum[node] / m) : Vec<dim>::Zero();
     });
     bc_.constrain(grid_, grid_.vOld, time_->value() - dt_);
     applyVelocityConstraints(grid_.vOld, time_->value() - dt_);
+    if (halo_) {
+        auto comm = timer_(PhaseTimer::Comm);
+        halo_->copy(grid_.vOld);
+    }
 }
 
 template <int dim> void MpmSimulation<dim>::velocityGradient() {
@@ -309,6 +388,10 @@ template <int dim> void MpmSimulation<dim>::velocityGradient() {
 template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
     auto timer = timer_(PhaseTimer::P2G);
     transfer_->scatterForce(particles_, grid_, sort_);
+    if (halo_) {
+        auto comm = timer_(PhaseTimer::Comm);
+        halo_->sum(grid_.force);
+    }
     bc_.fold(grid_, grid_.activeBlocks(), FoldForce);
 }
 
@@ -319,6 +402,10 @@ template <int dim> void MpmSimulation<dim>::remapMomentum() {
         grid_.momentum[i].setZero();
     });
     transfer_->scatter(particles_, grid_, sort_, false);
+    if (halo_) {
+        auto comm = timer_(PhaseTimer::Comm);
+        halo_->sum(grid_.mass, grid_.momentum);
+    }
     bc_.fold(grid_, grid_.activeBlocks(), FoldMassMomentum);
 }
 
@@ -327,7 +414,7 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     const Vec<dim> g = gravity_;
     const double alpha = damping_;
     const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
-    grid_.forEachNode(grid_.activeBlocks(), [&](Index node) {
+    grid_.forEachNode(updateBlocks(), [&](Index node) {
         const double m = grid_.mass[node];
         if (m > 0) {
             // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
@@ -343,6 +430,11 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     });
     bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
     applyVelocityConstraints(grid_.v, time_->value());
+    if (halo_) {
+        auto comm = timer_(PhaseTimer::Comm);
+        halo_->copy(grid_.vOld, grid_.v);
+        comm_.sum(reactions_[0].data(), static_cast<int>(2 * dim * dim)); // contiguous Vecs
+    }
 }
 
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
@@ -350,19 +442,20 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     const GatherStats st =
         transfer_->gather(particles_, grid_, dt, order_->gradientInGridToParticle());
     if (coupling_) coupling_->applyLocalForces(particles_, dt);
-    lastKinetic_ = st.kineticEnergy;
-    if (st.firstNonFinite >= 0) fail("G2P", st.firstNonFinite, "has a velocity that is not finite");
-    maxSpeed_ = st.maxSpeed;
-    maxMoveSpeed_ = st.maxMoveSpeed;
+    failIfAny(st.firstNonFinite >= 0, "G2P", st.firstNonFinite,
+              "has a velocity that is not finite");
+    lastKinetic_ = comm_.sum(st.kineticEnergy);
+    maxSpeed_ = comm_.max(st.maxSpeed);
+    maxMoveSpeed_ = comm_.max(st.maxMoveSpeed);
     if (maxSpeed_ * dt > grid_.h()) {
         std::ostringstream os;
         os << "moved more than one cell in one step (|v| = " << maxSpeed_ << " m/s, dt = " << dt
            << " s, h = " << grid_.h() << " m): the run is unstable or deltaT is too large";
         fail("G2P", fastestParticle(particles_), os.str());
     }
-    if (st.kineticEnergy > energyBudget_) {
+    if (lastKinetic_ > energyBudget_) {
         std::ostringstream os;
-        os << "is the fastest of a kinetic-energy blow-up: E_k = " << st.kineticEnergy
+        os << "is the fastest of a kinetic-energy blow-up: E_k = " << lastKinetic_
            << " J exceeds 10× what the initial state and the body acceleration can supply ("
            << energyBudget_ / 10 << " J)";
         fail("G2P", fastestParticle(particles_), os.str());
@@ -378,14 +471,14 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
     // materials, V ← V exp(Δt tr L) [002 Eq. 76] (Material::volumeFromRate).
     if (fBar_) fBar_->apply(particles_, grid_, *transfer_, sort_, dt);
     const Index inverted = particles_.updateDeformation(dt, volumeFromRate_);
-    if (inverted < numParticles())
-        fail("constitutive", inverted,
-             volumeFromRate_[particles_.material[inverted]]
-                 ? "has a volume that is not finite (velocity gradient not finite)"
-                 : "has det F <= 0 (inverted element)");
+    const bool isInverted = inverted < static_cast<Index>(particles_.size());
+    failIfAny(isInverted, "constitutive", inverted,
+              isInverted && volumeFromRate_[particles_.material[inverted]]
+                  ? "has a volume that is not finite (velocity gradient not finite)"
+                  : "has det F <= 0 (inverted element)");
     for (std::size_t m = 0; m < materials_.size(); ++m) {
         const Index bad = materials_[m]->updateStress(particles_, materialParticles_[m], dt);
-        if (bad >= 0) fail("constitutive", bad, "has a stress that is not finite");
+        failIfAny(bad >= 0, "constitutive", bad, "has a stress that is not finite");
     }
 }
 
@@ -396,7 +489,11 @@ template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
 
 template <int dim> void MpmSimulation<dim>::pushPointsOutOfBodies(double dt) {
     auto timer = timer_(PhaseTimer::Bodies);
+    // A point projected out of a body gives its momentum to the body (an impulse): each rank's
+    // points change its copy of the bodies, and the ranks add up the changes.
+    const std::vector<double> twists = comm_.parallel() ? bodies_.twists() : std::vector<double>{};
     coupling_->enforceGap(particles_, bodies_.bodies(), maxMoveSpeed_ * dt, dt);
+    if (comm_.parallel()) bodies_.sumTwistChanges(comm_, twists);
 }
 
 template <int dim> void MpmSimulation<dim>::checkBodies() {
@@ -405,7 +502,7 @@ template <int dim> void MpmSimulation<dim>::checkBodies() {
     if (!wrong.empty()) fail("rigid bodies", -1, wrong);
     // The gap enforcement changed velocities: the CFL speed is taken from the state again, as a
     // restart takes it (a restarted run then steps exactly as an uninterrupted one).
-    maxSpeed_ = maxSpeed(particles_, bodies_);
+    maxSpeed_ = comm_.max(maxSpeed(particles_, bodies_));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -435,9 +532,11 @@ template <int dim> void MpmSimulation<dim>::readWallContact(const std::string& f
 }
 
 template <int dim> void MpmSimulation<dim>::executeFunctions() {
+    if (functions_.empty()) return;
     auto timer = timer_(PhaseTimer::Functions);
+    const State<dim> s = state(); // once: its reductions are collective
     for (auto& f : functions_)
-        f->execute(state(), *time_);
+        f->execute(s, *time_);
 }
 
 template <int dim> void MpmSimulation<dim>::write() {
@@ -445,10 +544,11 @@ template <int dim> void MpmSimulation<dim>::write() {
     auto timer = timer_(PhaseTimer::IO);
     std::vector<std::string> files{"particles.vtu"};
     if (!bodies_.empty()) files.push_back("rigidBodies.vtp");
-    writer_.write(
+    const io::PointCloud cloud = io::toPointCloud(particles_);
+    const std::vector<std::string> purged = writer_.write(
         *time_,
-        [this](const std::filesystem::path& dir) {
-            io::writeVtu(dir / "particles.vtu", io::toPointCloud(particles_));
+        [this, &cloud](const std::filesystem::path& dir) {
+            io::writeVtu(dir / "particles.vtu", cloud);
             if (!acceleration_->isConstant())
                 io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
                                     accelerationWork_);
@@ -463,6 +563,24 @@ template <int dim> void MpmSimulation<dim>::write() {
             }
         },
         files);
+    if (!comm_.parallel()) return;
+    // A parallel run: rank r wrote processor<r>/<time>/ (its points and the restart state);
+    // rank 0 writes <time>/particles.pvtu, which ParaView opens as one data set of all pieces,
+    // and the bodies, once every piece is there.
+    comm_.barrier();
+    if (!rootWriter_) return;
+    files[0] = "particles.pvtu";
+    const std::string name = time_->name();
+    std::vector<std::string> pieces;
+    for (int r = 0; r < comm_.size(); ++r)
+        pieces.push_back("../processor" + std::to_string(r) + "/" + name + "/particles.vtu");
+    rootWriter_->write(
+        *time_,
+        [&](const std::filesystem::path& dir) {
+            io::writePvtu(dir / "particles.pvtu", cloud, pieces);
+            if (!bodies_.empty()) bodies_.write(dir);
+        },
+        files, &purged);
 }
 
 template <int dim>
@@ -470,9 +588,10 @@ void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const st
     std::ostringstream os;
     os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": ";
     if (particle >= 0)
-        os << "particle " << particles_.id[particle] << " at ("
-           << particles_.x[particle].transpose() << ") ";
+        os << (comm_.size() > 1 ? "rank " + std::to_string(comm_.rank()) + ": " : "") << "particle "
+           << particles_.id[particle] << " at (" << particles_.x[particle].transpose() << ") ";
     os << what << '.';
+    if (particle >= static_cast<Index>(particles_.size())) particle = -1;
     if (!options_.dryRun && good_.restore(particles_, bodies_, *time_)) {
         write();
         os << "\nThe last good state (step " << time_->index() << ", t = " << time_->value()
@@ -482,8 +601,22 @@ void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const st
 }
 
 template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
-    timer_.report(os, numParticles(), coupling_ != nullptr, !bodies_.empty());
-    if (removed_ > 0) os << removed_ << " particles left through open faces and were removed\n";
+    const long total = numParticles();
+    timer_.report(os, total, coupling_ != nullptr, !bodies_.empty(), comm_.parallel());
+    if (comm_.parallel()) {
+        // Load balance and communication of the run (docs/parallel.md).
+        const std::vector<double> points = comm_.gather(static_cast<double>(particles_.size()));
+        const std::vector<double> comm = comm_.gather(timer_.seconds(PhaseTimer::Comm));
+        const double mean = static_cast<double>(total) / comm_.size();
+        const double most = *std::max_element(points.begin(), points.end());
+        os << std::defaultfloat << std::setprecision(4) << "Ranks: " << comm_.size()
+           << ", points per rank max/mean " << (mean > 0 ? most / mean : 1.0) << ", comm "
+           << *std::max_element(comm.begin(), comm.end()) << " s (slowest rank), halo "
+           << halo_->bytesSent() / std::max<long>(timer_.steps(), 1) / 1024.0
+           << " KiB per step sent by rank 0\n";
+    }
+    if (const Index removed = comm_.sum(removed_); removed > 0)
+        os << removed << " particles left through open faces and were removed\n";
     // Memory that follows the material: the active blocks' node fields, the particles' state.
     const double active = static_cast<double>(grid_.activeBlocks().size());
     const double nodeBytes = Grid<dim>::BytesPerNode;
@@ -495,7 +628,7 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
        << grid_.numBlocks() << " blocks active (" << 100.0 * active / grid_.numBlocks() << " %), "
        << active * Grid<dim>::NodesPerBlock * nodeBytes / 1048576.0 << " MiB of node fields ("
        << nodeBytes << " B per node); particle state " << particleBytes << " B per particle\n";
-    const double pups = timer_.updatesPerSecond(numParticles());
+    const double pups = timer_.updatesPerSecond(total);
     os << std::defaultfloat << std::setprecision(4) << "Particle-updates per second: " << pups
        << " (" << pups / 1e6 << " M)\n";
 }
@@ -503,11 +636,12 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
 template class MpmSimulation<2>;
 template class MpmSimulation<3>;
 
-std::unique_ptr<Simulation> Simulation::create(const Case& cs, const RunOptions& options) {
+std::unique_ptr<Simulation> Simulation::create(const Case& cs, const RunOptions& options,
+                                               const Comm& comm) {
     const Dictionary grid = cs.read("constant/grid");
     const int dim = grid.getInt("dimension", Bounds::closed(2, 3));
-    if (dim == 2) return std::make_unique<MpmSimulation<2>>(cs, options, grid);
-    return std::make_unique<MpmSimulation<3>>(cs, options, grid);
+    if (dim == 2) return std::make_unique<MpmSimulation<2>>(cs, options, grid, comm);
+    return std::make_unique<MpmSimulation<3>>(cs, options, grid, comm);
 }
 
 } // namespace mpm

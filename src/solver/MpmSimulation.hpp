@@ -11,6 +11,9 @@
 #include "io/TimeDirectory.hpp"
 #include "materials/Material.hpp"
 #include "monitors/FunctionObject.hpp"
+#include "parallel/Comm.hpp"
+#include "parallel/Decomposition.hpp"
+#include "parallel/GridHalo.hpp"
 #include "particles/BlockSort.hpp"
 #include "particles/ParticleSeeder.hpp"
 #include "particles/Particles.hpp"
@@ -32,7 +35,9 @@ namespace mpm {
 /// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of DESIGN §4.
 template <int dim> class MpmSimulation final : public Simulation, private StressPhases {
 public:
-    MpmSimulation(const Case& cs, const RunOptions& options, const Dictionary& gridDict);
+    /// `cs`: the case, or this rank's processor case (Case::processor) in a parallel run.
+    MpmSimulation(const Case& cs, const RunOptions& options, const Dictionary& gridDict,
+                  const Comm& comm);
 
     void start(Time& time) override;
     double stableDeltaT() const override;
@@ -40,7 +45,8 @@ public:
     void executeFunctions() override;
     void write() override;
     void report(std::ostream& os) const override;
-    long numParticles() const override { return static_cast<long>(particles_.size()); }
+    /// All ranks' points (collective).
+    long numParticles() const override { return comm_.sum(static_cast<Index>(particles_.size())); }
     int dimension() const override { return dim; }
 
     const Particles<dim>& particles() const { return particles_; }
@@ -81,6 +87,18 @@ private:
     bool wallContactIsState() const;
     void readWallContact(const std::string& file);
 
+    // Parallel runs (docs/parallel.md); nothing of it runs in a serial one.
+    /// Check the case uses only what a parallel run supports; read the decomposition.
+    void setUpParallel();
+    /// Points whose block another rank owns go there (after G2P: at the start of the step).
+    void migrateParticles();
+    /// The blocks whose nodes this rank updates: its owned active blocks, or all active ones.
+    const std::vector<Index>& updateBlocks() const {
+        return halo_ ? halo_->owned() : grid_.activeBlocks();
+    }
+    /// Collective failure check: stops every rank when `bad` holds on any (fail on each).
+    void failIfAny(bool bad, const std::string& phase, Index particle, const std::string& what);
+
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
@@ -91,16 +109,21 @@ private:
                 gravity_,
                 reactions_,
                 bodies_.bodies(),
-                coupling_ ? coupling_->minimumGapSeen() : 1e300,
-                coupling_ ? coupling_->numContacts() : 0,
+                comm_.min(coupling_ ? coupling_->minimumGapSeen() : 1e300),
+                comm_.sum(coupling_ ? coupling_->numContacts() : Index(0)),
                 time_->value(),
                 *acceleration_,
                 accelerationWork_,
-                coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300};
+                comm_.min(coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300),
+                comm_};
     }
 
     const Case& case_;
+    Case global_; ///< the root case (case_ itself in a serial run): postProcessing, .pvtu
     RunOptions options_;
+    const Comm& comm_;
+    std::unique_ptr<Decomposition<dim>> decomposition_; ///< parallel runs only
+    std::unique_ptr<GridHalo<dim>> halo_;               ///< parallel runs only
     Time* time_ = nullptr;
 
     Grid<dim> grid_;
@@ -133,6 +156,7 @@ private:
     std::vector<double> waveOf_, criticalDensityOf_; ///< per material
     std::vector<std::unique_ptr<FunctionObject<dim>>> functions_;
     io::TimeDirectoryWriter writer_;
+    std::unique_ptr<io::TimeDirectoryWriter> rootWriter_; ///< rank 0 of a parallel run: .pvtu
 
     double maxSpeed_ = 0;
     double maxMoveSpeed_ = 0; ///< largest grid (PIC) speed a point moved with in the last G2P

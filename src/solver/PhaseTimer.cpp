@@ -17,7 +17,8 @@ PhaseTimer::Scope::~Scope() {
     acc_ += now() - t0_;
 }
 
-void PhaseTimer::report(std::ostream& os, long particles, bool coupled, bool bodies) const {
+void PhaseTimer::report(std::ostream& os, long particles, bool coupled, bool bodies,
+                        bool parallel) const {
     const double total = stepWall_ + t_[IO] + t_[Functions];
     auto line = [&](const char* name, double t) {
         os << "    " << std::left << std::setw(14) << name << std::right << std::setw(10)
@@ -36,6 +37,7 @@ void PhaseTimer::report(std::ostream& os, long particles, bool coupled, bool bod
     line("functions", t_[Functions]);
     line("IO", t_[IO]);
     line("total", total);
+    if (parallel) line("of which comm", t_[Comm]);
 }
 
 } // namespace mpm

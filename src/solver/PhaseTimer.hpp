@@ -9,7 +9,21 @@ namespace mpm {
 /// Wall time spent in each phase of the step, the steps taken and the particle-update rate.
 class PhaseTimer {
 public:
-    enum Phase { Sort, Contact, P2G, Grid, G2P, Constitutive, Bodies, IO, Functions, NumPhases };
+    /// Comm: the messages of a parallel run (halo, migration, reductions), a part of the phases
+    /// it happens in (reported separately, not added to the total).
+    enum Phase {
+        Sort,
+        Contact,
+        P2G,
+        Grid,
+        G2P,
+        Constitutive,
+        Bodies,
+        IO,
+        Functions,
+        Comm,
+        NumPhases
+    };
 
     /// Adds the wall time of its scope to one phase.
     class Scope {
@@ -39,7 +53,10 @@ public:
 
     /// The phase table (phases that cannot occur in the run left out) and the particle-updates
     /// per second over the steps.
-    void report(std::ostream& os, long particles, bool coupled, bool bodies) const;
+    void report(std::ostream& os, long particles, bool coupled, bool bodies,
+                bool parallel = false) const;
+    double seconds(Phase phase) const { return t_[phase]; }
+    double stepSeconds() const { return stepWall_; }
 
     static double now();
 

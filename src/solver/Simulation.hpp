@@ -3,6 +3,7 @@
 
 #include "case/Case.hpp"
 #include "case/Time.hpp"
+#include "parallel/Comm.hpp"
 
 #include <memory>
 #include <ostream>
@@ -37,8 +38,10 @@ public:
     virtual long numParticles() const = 0;
     virtual int dimension() const = 0;
 
-    /// Read constant/grid's `dimension` and build the 2D or 3D simulation of the case.
-    static std::unique_ptr<Simulation> create(const Case& cs, const RunOptions& options);
+    /// Read constant/grid's `dimension` and build the 2D or 3D simulation of the case; `comm`:
+    /// the ranks of a parallel run (then `cs` is this rank's processor case).
+    static std::unique_ptr<Simulation> create(const Case& cs, const RunOptions& options,
+                                              const Comm& comm = serialComm());
 };
 
 } // namespace mpm

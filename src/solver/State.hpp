@@ -4,6 +4,7 @@
 #include "forces/BodyAcceleration.hpp"
 #include "grid/Grid.hpp"
 #include "materials/Material.hpp"
+#include "parallel/Comm.hpp"
 #include "particles/Particles.hpp"
 #include "rigid/RigidBody.hpp"
 
@@ -37,6 +38,9 @@ template <int dim> struct State {
     /// minimumGap before the coupling projected points out (Coupling::enforceGap) [m]: what the
     /// force law alone achieved.
     double minimumGapBeforeProjection;
+    /// The ranks of the run: a function object reduces what it sums over `particles` (this
+    /// rank's only) with it; every other member is already the whole run's.
+    const Comm& comm = serialComm();
 };
 
 } // namespace mpm

@@ -4,6 +4,7 @@
 #include "forces/BodyAcceleration.hpp"
 #include "grid/Grid.hpp"
 #include "materials/Material.hpp"
+#include "parallel/Comm.hpp"
 #include "particles/Particles.hpp"
 #include "rigid/BodySet.hpp"
 #include "solver/Reduce.hpp"
@@ -36,12 +37,15 @@ template <int dim> Index fastestParticle(const Particles<dim>& p) {
     return worst;
 }
 
-/// Σ m_p x_p + Σ m_b x_b over the points and the bodies that g moves (free, driven) [kg m].
-template <int dim> Vec<dim> massMoment(const Particles<dim>& p, const BodySet<dim>& bodies) {
+/// Σ m_p x_p + Σ m_b x_b over the points (of every rank of `comm`) and the bodies that g moves
+/// (free, driven) [kg m].
+template <int dim>
+Vec<dim> massMoment(const Particles<dim>& p, const BodySet<dim>& bodies, const Comm& comm) {
     const Index n = static_cast<Index>(p.size());
     Vec<dim> moment;
     for (int d = 0; d < dim; ++d)
         moment[d] = deterministicSum(n, [&](Index i) { return p.mass[i] * p.x[i][d]; });
+    comm.sum(moment.data(), dim);
     for (const auto& b : bodies.bodies())
         if (b->motion() == Motion::Free || b->motion() == Motion::Driven)
             moment += b->mass() * b->position();
@@ -51,18 +55,20 @@ template <int dim> Vec<dim> massMoment(const Particles<dim>& p, const BodySet<di
 /// The blow-up budget [J]: 10 × what the initial state and the body acceleration can supply
 /// (docs/caseFormat.md §11); unbounded (1e300) when prescribed or driven bodies can do unbounded
 /// work, or g along a `periodic` axis (its first dim entries; a time-varying g with any
-/// periodic axis). `g` is the acceleration at the start.
+/// periodic axis). `g` is the acceleration at the start; the points are those of every rank.
 template <int dim>
 double energyBudget(const Particles<dim>& p,
                     const std::vector<std::unique_ptr<Material<dim>>>& materials,
                     const BodySet<dim>& bodies, const BodyAcceleration<dim>& acceleration,
-                    const Vec<dim>& g, const Grid<dim>& grid, const std::array<bool, 3>& periodic) {
+                    const Vec<dim>& g, const Grid<dim>& grid, const std::array<bool, 3>& periodic,
+                    const Comm& comm) {
     const Index n = static_cast<Index>(p.size());
-    const double kinetic =
-        deterministicSum(n, [&](Index i) { return 0.5 * p.mass[i] * p.v[i].squaredNorm(); });
-    const double strain =
-        deterministicSum(n, [&](Index i) { return materials[p.material[i]]->strainEnergy(p, i); });
-    const double mass = deterministicSum(n, [&](Index i) { return p.mass[i]; });
+    double sums[3] = {
+        deterministicSum(n, [&](Index i) { return 0.5 * p.mass[i] * p.v[i].squaredNorm(); }),
+        deterministicSum(n, [&](Index i) { return materials[p.material[i]]->strainEnergy(p, i); }),
+        deterministicSum(n, [&](Index i) { return p.mass[i]; })};
+    comm.sum(sums, 3);
+    const double kinetic = sums[0], strain = sums[1], mass = sums[2];
     double budget = 0;
     if (acceleration.isConstant()) {
         double extent = 0; // Σ |g_d| L_d: the largest drop in potential per unit mass
