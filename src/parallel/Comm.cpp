@@ -68,6 +68,16 @@ Index Comm::sum(Index x) const {
     return static_cast<Index>(out);
 }
 
+void Comm::sum(Index* data, std::size_t n) const {
+    if (!mpi_ || size_ == 1) return;
+    static_assert(sizeof(Index) == sizeof(std::int64_t));
+    constexpr std::size_t Chunk = std::size_t(1) << 26; // MPI counts are int
+    for (std::size_t at = 0; at < n; at += Chunk)
+        check(MPI_Allreduce(MPI_IN_PLACE, data + at, static_cast<int>(std::min(Chunk, n - at)),
+                            MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD),
+              "MPI_Allreduce");
+}
+
 double Comm::max(double x) const {
     if (!mpi_) return x;
     double out = 0;

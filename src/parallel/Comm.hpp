@@ -42,6 +42,8 @@ public:
         return x;
     }
     Index sum(Index x) const;
+    /// Σ over ranks of `n` integers in place (exact, so in any order).
+    void sum(Index* data, std::size_t n) const;
     double max(double x) const;
     double min(double x) const;
     Index min(Index x) const;

@@ -121,22 +121,34 @@ void splitHierarchical(const std::vector<Index>& load, const IVec<dim>& nb, cons
 template <int dim>
 void bisect(const std::vector<Index>& load, const IVec<dim>& nb, const Box<dim>& box, int first,
             int ranks, std::vector<std::int32_t>& owner) {
-    int a = 0;
-    for (int d = 1; d < dim; ++d)
-        if (box.hi[d] - box.lo[d] > box.hi[a] - box.lo[a]) a = d;
-    const Index len = box.hi[a] - box.lo[a];
-    if (ranks == 1 || len < 2) { // a single block: the other ranks get none
+    // The axis to cut: the longest extent of the loaded blocks (of the whole box when it has
+    // no load), among the axes the box can be cut across (ties: the lowest). A tall column in a
+    // wide box is then cut across its height, into compact subdomains.
+    IVec<dim> lo = box.hi, hi = box.lo;
+    bool loaded = false;
+    forEachBlock(box, nb, [&](Index b, const IVec<dim>& c) {
+        if (load[static_cast<std::size_t>(b)] == 0) return;
+        loaded = true;
+        for (int d = 0; d < dim; ++d)
+            lo[d] = std::min(lo[d], c[d]), hi[d] = std::max(hi[d], c[d] + 1);
+    });
+    if (!loaded) lo = box.lo, hi = box.hi;
+    int a = -1;
+    for (int d = 0; d < dim; ++d)
+        if (box.hi[d] - box.lo[d] >= 2 && (a < 0 || hi[d] - lo[d] > hi[a] - lo[a])) a = d;
+    if (ranks == 1 || a < 0) { // a single block: the other ranks get none
         assign(box, nb, first, owner);
         return;
     }
+    const Index len = box.hi[a] - box.lo[a];
     const int lower = ranks / 2;
     const std::vector<Index> cum = cumulativeLoad(load, nb, box, a);
     const Index cut = bestCut(cum, 1, len - 1, lower, ranks);
-    Box<dim> lo = box, hi = box;
-    lo.hi[a] = box.lo[a] + static_cast<int>(cut);
-    hi.lo[a] = lo.hi[a];
-    bisect(load, nb, lo, first, lower, owner);
-    bisect(load, nb, hi, first + lower, ranks - lower, owner);
+    Box<dim> below = box, above = box;
+    below.hi[a] = box.lo[a] + static_cast<int>(cut);
+    above.lo[a] = below.hi[a];
+    bisect(load, nb, below, first, lower, owner);
+    bisect(load, nb, above, first + lower, ranks - lower, owner);
 }
 
 /// `coeffs.n`: dim positive integers whose product is `size`, none above the blocks along its
@@ -324,6 +336,19 @@ template <int dim> std::vector<Index> Decomposition<dim>::blockCounts() const {
 template <int dim> int Decomposition<dim>::emptySubdomains() const {
     const std::vector<Index> counts = blockCounts();
     return static_cast<int>(std::count(counts.begin(), counts.end(), Index(0)));
+}
+
+RebalanceSettings RebalanceSettings::read(const Dictionary& dict) {
+    RebalanceSettings r;
+    if (!dict.has("rebalance")) return r;
+    const Dictionary d = dict.subDict("rebalance");
+    r.maxImbalance = d.getScalar("maxImbalance", Bounds{1.0, 1e300, false, true});
+    r.interval = d.getIntOr("interval", 50, Bounds::closed(1, 1e9));
+    d.checkUnknownKeys();
+    if (dict.getWordOr("method", "simple", {"simple", "hierarchical", "bisection"}) == "simple")
+        dict.error("rebalance", "rebalancing needs a method that balances the points "
+                                "(hierarchical or bisection); simple cuts the box geometrically");
+    return r;
 }
 
 template class Decomposition<2>;

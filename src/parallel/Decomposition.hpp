@@ -24,13 +24,27 @@ namespace mpm {
 ///   of `order` into n_a slabs of equal load, then each slab along the next axis by its own
 ///   load, and so on; owners numbered as simple. A slab with no load splits geometrically.
 /// - `bisection`: recursive coordinate bisection balancing the load, for any number of
-///   subdomains: a box of blocks with N ranks is cut across its longest axis (ties: the lowest)
+///   subdomains: a box of blocks with N ranks is cut across the longest axis of its loaded
+///   blocks' bounding box (of the box itself without load; ties: the lowest)
 ///   into ⌊N/2⌋ and N − ⌊N/2⌋ ranks where the cumulative load best matches ⌊N/2⌋/N (a box with
 ///   no load: in that proportion of its length); ranks numbered depth first, lower part first.
 ///   A single block with N > 1 ranks goes to the first of them: the others own no block
 ///   (emptySubdomains() counts them), which happens only when N exceeds the number of blocks
 ///   of some branch.
 /// Every method is deterministic: the same blocks and load give the same owners.
+/// Run-time load balancing of system/decomposeParDict (`rebalance: {maxImbalance, interval}`):
+/// every `interval` steps (default 50) a parallel run whose largest rank holds more than
+/// `maxImbalance` times the mean number of points decomposes again by the current points, with
+/// the dictionary's method (hierarchical or bisection: simple ignores the points).
+struct RebalanceSettings {
+    double maxImbalance = 0; ///< 0: never rebalance
+    long interval = 50;      ///< steps between checks
+
+    bool enabled() const { return maxImbalance > 0; }
+    /// Read (and check) the optional `rebalance` entry; InputErrors name the key.
+    static RebalanceSettings read(const Dictionary& dict);
+};
+
 template <int dim> class Decomposition {
 public:
     /// One subdomain (a serial run): every block owned by 0, method "none".

@@ -90,10 +90,35 @@ template <int dim> void MpmSimulation<dim>::setUpParallel() {
                              " ranks: run mpirun -np " + std::to_string(decomposition_->size()) +
                              ", or decomposePar again");
     halo_ = std::make_unique<GridHalo<dim>>(comm_, *decomposition_);
+    decomposeDict_ = std::make_unique<Dictionary>(case_.read("system/decomposeParDict"));
+    rebalance_ = RebalanceSettings::read(*decomposeDict_);
     if (comm_.master())
         rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(
             global_, bodies_.empty() ? std::vector<std::string>{"particles"}
                                      : std::vector<std::string>{"particles", "rigidBodies"});
+}
+
+template <int dim> void MpmSimulation<dim>::rebalance() {
+    const long step = preloading_ ? preloadIndex_ : time_->index();
+    if (step % rebalance_.interval != 0) return;
+    auto timer = timer_(PhaseTimer::Comm);
+    const double n = static_cast<double>(particles_.size());
+    const double mean = comm_.sum(n) / comm_.size();
+    const double before = mean > 0 ? comm_.max(n) / mean : 1.0;
+    if (before <= rebalance_.maxImbalance) return;
+    std::vector<Index> load(static_cast<std::size_t>(grid_.numBlocks()), 0);
+    for (const Vec<dim>& x : particles_.x) {
+        const Vec<dim> xh = (x - grid_.origin()) * grid_.invH();
+        if (grid_.insideArrays(xh)) ++load[static_cast<std::size_t>(grid_.blockOf(xh))];
+    }
+    comm_.sum(load.data(), load.size()); // integers: exact in any order
+    Decomposition<dim> next = Decomposition<dim>::build(*decomposeDict_, grid_.blocks(), load);
+    const std::vector<Index> after = next.loads(load);
+    const double most = static_cast<double>(*std::max_element(after.begin(), after.end()));
+    if (most / mean >= before) return; // the blocks allow no better: no migration for nothing
+    *decomposition_ = std::move(next);
+    log() << "Rebalanced at step " << step << ": points per rank max/mean " << before << " -> "
+          << most / mean << '\n';
 }
 
 template <int dim> void MpmSimulation<dim>::migrateParticles() {
@@ -128,6 +153,9 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
                                  " differs from rank 0's: the processor "
                                  "directories hold different times (remove the incomplete ones)");
         io::readParticles(case_, from, particles_, materials_.size());
+        if (decomposition_ && case_.exists(from + "/uniform/decomposition")) // rebalanced
+            *decomposition_ = Decomposition<dim>::read(case_, from + "/uniform/decomposition",
+                                                       grid_.blocks());
         if (decomposition_) migrate(particles_, grid_, *decomposition_, comm_, scratch_);
         time.readTimeDict(from);
         if (!bodies_.empty()) bodies_.read(case_, from);
@@ -291,7 +319,10 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
             buildMaterialLists();
             removed_ += left;
         }
-    if (decomposition_) migrateParticles();
+    if (decomposition_) {
+        if (rebalance_.enabled()) rebalance();
+        migrateParticles();
+    }
     const Index outside = sort_.update(particles_, grid_);
     failIfAny(outside >= 0, "sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
@@ -549,6 +580,10 @@ template <int dim> void MpmSimulation<dim>::write() {
         *time_,
         [this, &cloud](const std::filesystem::path& dir) {
             io::writeVtu(dir / "particles.vtu", cloud);
+            if (rebalance_.enabled()) { // the decomposition of this time, for a restart
+                std::filesystem::create_directories(dir / "uniform");
+                decomposition_->write(dir / "uniform" / "decomposition");
+            }
             if (!acceleration_->isConstant())
                 io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
                                     accelerationWork_);

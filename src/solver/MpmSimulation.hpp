@@ -92,6 +92,9 @@ private:
     void setUpParallel();
     /// Points whose block another rank owns go there (after G2P: at the start of the step).
     void migrateParticles();
+    /// Every RebalanceSettings::interval steps (by step index): decompose again by the current
+    /// points when the largest rank holds more than maxImbalance times the mean.
+    void rebalance();
     /// The blocks whose nodes this rank updates: its owned active blocks, or all active ones.
     const std::vector<Index>& updateBlocks() const {
         return halo_ ? halo_->owned() : grid_.activeBlocks();
@@ -124,6 +127,8 @@ private:
     const Comm& comm_;
     std::unique_ptr<Decomposition<dim>> decomposition_; ///< parallel runs only
     std::unique_ptr<GridHalo<dim>> halo_;               ///< parallel runs only
+    std::unique_ptr<Dictionary> decomposeDict_;         ///< to decompose again (rebalance)
+    RebalanceSettings rebalance_;
     Time* time_ = nullptr;
 
     Grid<dim> grid_;

@@ -148,6 +148,7 @@ template <int dim> void decompose(const Case& cs, const Dictionary& gridDict, bo
     }
 
     const auto dec = Decomposition<dim>::build(dict, grid.blocks(), load);
+    RebalanceSettings::read(dict); // checked here, used by the solver
     dict.checkUnknownKeys();
     const int n = dec.size();
 
