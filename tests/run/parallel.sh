@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# Parallel runs (docs/parallel.md) on glassDrop40Coarse (3D sand, a coupled rigid sphere) and the
+# OpenFOAM workflow's error paths:
+#  1. 200 steps on 2 ranks (bisection) and 3 ranks (hierarchical) against the serial run: the
+#     same points, positions within 1e-10 of the box, the sphere's state (body forces summed over
+#     the ranks) within 1e-10 relative; ParaView's parallel reader opens the .pvtu of every time;
+#     reconstructPar -latestTime gives a serial time directory a serial run restarts from.
+#  2. errors, each a clear message, a non-zero exit and no hang: -np unlike the decomposition,
+#     a missing processor directory, -parallel without mpirun, -parallel on a case never
+#     decomposed, a feature the parallel step does not support (periodic faces), decomposePar
+#     over existing processor directories (without -force) and with a bad method,
+#     reconstructPar without processor directories.
+set -euo pipefail
+root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
+bin=$root/bin
+py=${MPMFOAM_PYTHON:-/usr/bin/python3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+if [ "$(id -u)" = 0 ]; then export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1; fi
+export OMP_NUM_THREADS=1
+mpi() { timeout 300 mpirun --oversubscribe -np "$@"; }
+fail() { echo "FAIL: $*"; exit 1; }
+
+make_case() { # make_case DIR DECOMPOSEPARDICT
+    mkdir -p "$1"
+    cp -r "$root/tutorials/granularImpact/glassDrop40Coarse/"{system,constant} "$1/"
+    sed -i 's/^endTime:[^#]*/endTime: 0.004 /; s/^writeInterval:[^#]*/writeInterval: 0.002 /' \
+        "$1/system/controlDict"
+    printf "$2" > "$1/system/decomposeParDict"
+}
+
+# 1. Agreement with the serial run.
+make_case "$work/serial" "numberOfSubdomains: 1\nmethod: bisection\n"
+"$bin/mpmFoam" -case "$work/serial" > "$work/serial/log" 2>&1 || fail "serial run"
+for n in 2 3; do
+    c=$work/np$n
+    if [ $n = 2 ]; then d="numberOfSubdomains: 2\nmethod: bisection\n"
+    else d="numberOfSubdomains: 3\nmethod: hierarchical\nhierarchicalCoeffs: {n: [3, 1, 1]}\n"; fi
+    make_case "$c" "$d"
+    "$bin/decomposePar" -case "$c" > "$c/log.decomposePar" 2>&1 || fail "decomposePar np$n"
+    mpi $n "$bin/mpmFoam" -case "$c" -parallel > "$c/log" 2>&1 || { tail "$c/log"; fail "np$n run"; }
+    "$bin/reconstructPar" -case "$c" > "$c/log.reconstructPar" 2>&1 || fail "reconstructPar np$n"
+done
+"$py" - "$work" <<'PY'
+import glob, os, sys
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLPUnstructuredGridReader
+
+work = sys.argv[1]
+L = 0.225
+
+
+def read(path, parallel=False):
+    r = vtkXMLPUnstructuredGridReader() if parallel else vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    out = r.GetOutput()
+    ids = vtk_to_numpy(out.GetPointData().GetArray("id"))
+    o = np.argsort(ids)
+    return ids[o], vtk_to_numpy(out.GetPoints().GetData())[o]
+
+
+bad = []
+for n in (2, 3):
+    for t in ("0", "0.002", "0.004"):
+        ia, xa = read(os.path.join(work, "serial", t, "particles.vtu"))
+        ib, xb = read(os.path.join(work, "np%d" % n, t, "particles.vtu"))
+        ic, xc = read(os.path.join(work, "np%d" % n, t, "particles.pvtu"), parallel=True)
+        if len(ia) != len(ib) or (ia != ib).any() or len(ic) != len(ia) or (ic != ia).any():
+            bad.append("np%d t=%s: points differ" % (n, t))
+            continue
+        err = max(np.abs(xa - xb).max(), np.abs(xa - xc).max()) / L
+        print("np%d t=%s: %d points, max |dx|/L = %.2e" % (n, t, len(ia), err))
+        if err > 1e-10:
+            bad.append("np%d t=%s: positions differ by %.2e of L" % (n, t, err))
+    s = np.loadtxt(glob.glob(os.path.join(work, "serial/postProcessing/sphere/*/sphere.dat"))[0])
+    p = np.loadtxt(glob.glob(os.path.join(work, "np%d/postProcessing/sphere/*/sphere.dat" % n))[0])
+    # Columns time, x(3), v(3), omega(3), F(3), T(3): each against its own scale (omega and T
+    # are rounding noise here, so scaled by |v|/R and |F| R with the sphere's radius R).
+    R = 0.5 * 0.03834
+    v, F = np.abs(s[:, 4:7]).max(), np.abs(s[:, 10:13]).max()
+    scale = np.array([1.0] + [L] * 3 + [v] * 3 + [v / R] * 3 + [F] * 3 + [F * R] * 3)
+    err = (np.abs(s - p) / scale).max() if s.shape == p.shape else np.inf
+    print("np%d: sphere state (%d rows) max relative difference %.2e" % (n, len(s), err))
+    if err > 1e-10:
+        bad.append("np%d: sphere state differs by %.2e" % (n, err))
+if bad:
+    sys.exit("FAIL: " + "; ".join(bad))
+PY
+# The reconstructed latest time restarts a serial run.
+rm -rf "$work/np2/0" "$work/np2/0.002" "$work/np2/0.004"
+"$bin/reconstructPar" -case "$work/np2" -latestTime > /dev/null 2>&1 || fail "reconstructPar -latestTime"
+[ -f "$work/np2/0.004/particles.vtu" ] && [ ! -d "$work/np2/0.002" ] || fail "-latestTime output"
+sed -i 's/^endTime:[^#]*/endTime: 0.005 /' "$work/np2/system/controlDict"
+"$bin/mpmFoam" -case "$work/np2" > "$work/np2/log.serialRestart" 2>&1 || fail "serial restart"
+grep -q "Restart from time 0.004 (59114 particles)" "$work/np2/log.serialRestart" ||
+    fail "serial restart from the reconstructed time: $(grep Restart "$work/np2/log.serialRestart")"
+
+# 2. Errors: message, non-zero exit, no hang.
+expect() { # expect "message" LOG: the last command failed and LOG holds message
+    grep -qF -- "$1" "$2" || { cat "$2"; fail "expected '$1'"; }
+}
+c=$work/np3
+if mpi 2 "$bin/mpmFoam" -case "$c" -parallel > "$work/e1" 2>&1; then fail "-np 2 on 3 subdomains ran"; fi
+expect "decomposed into 3 subdomains but the run has 2 ranks" "$work/e1"
+if timeout 120 "$bin/mpmFoam" -case "$c" -parallel > "$work/e2" 2>&1; then fail "singleton ran"; fi
+expect "decomposed into 3 subdomains but the run has 1 ranks" "$work/e2"
+rm -rf "$c/processor2"
+if mpi 3 "$bin/mpmFoam" -case "$c" -parallel > "$work/e3" 2>&1; then fail "missing processor2 ran"; fi
+expect "no such processor directory" "$work/e3"
+make_case "$work/fresh" "numberOfSubdomains: 2\nmethod: bisection\n"
+if mpi 2 "$bin/mpmFoam" -case "$work/fresh" -parallel > "$work/e4" 2>&1; then fail "undecomposed ran"; fi
+expect "run decomposePar first" "$work/e4"
+"$bin/decomposePar" -case "$work/fresh" > /dev/null 2>&1 || fail "decomposePar fresh"
+if "$bin/decomposePar" -case "$work/fresh" > "$work/e5" 2>&1; then fail "decomposePar over processor dirs"; fi
+expect "-force" "$work/e5"
+printf "numberOfSubdomains: 2\nmethod: scotch\n" > "$work/fresh/system/decomposeParDict"
+if "$bin/decomposePar" -case "$work/fresh" -force > "$work/e6" 2>&1; then fail "method scotch accepted"; fi
+expect "bisection" "$work/e6"
+[ -d "$work/fresh/processor1" ] || fail "a failed decomposePar -force removed the old decomposition"
+if "$bin/reconstructPar" -case "$work/serial" > "$work/e7" 2>&1; then fail "reconstructPar without processors"; fi
+expect "processor" "$work/e7"
+p=$work/periodic
+cp -r "$root/tests/cases/periodicBox2D" "$p"
+printf "numberOfSubdomains: 2\nmethod: bisection\n" > "$p/system/decomposeParDict"
+"$bin/decomposePar" -case "$p" > /dev/null 2>&1 || fail "decomposePar periodic"
+if mpi 2 "$bin/mpmFoam" -case "$p" -parallel > "$work/e8" 2>&1; then fail "periodic ran in parallel"; fi
+expect "not available in parallel runs yet" "$work/e8"
+echo "PASS parallel"
