@@ -4,7 +4,8 @@
 #  1. 200 steps on 2 ranks (bisection) and 3 ranks (hierarchical) against the serial run: the
 #     same points, positions within 1e-10 of the box, the sphere's state (body forces summed over
 #     the ranks) within 1e-10 relative; ParaView's parallel reader opens the .pvtu of every time;
-#     reconstructPar -latestTime gives a serial time directory a serial run restarts from.
+#     the pieces are bit-identical with 1 and 2 threads per rank; reconstructPar -latestTime
+#     gives a serial time directory a serial run restarts from.
 #  2. errors, each a clear message, a non-zero exit and no hang: -np unlike the decomposition,
 #     a missing processor directory, -parallel without mpirun, -parallel on a case never
 #     decomposed, a feature the parallel step does not support (periodic faces), decomposePar
@@ -88,6 +89,17 @@ for n in (2, 3):
 if bad:
     sys.exit("FAIL: " + "; ".join(bad))
 PY
+# The same ranks on 2 threads each: bit-identical pieces.
+c2=$work/np2threads
+make_case "$c2" "numberOfSubdomains: 2\nmethod: bisection\n"
+"$bin/decomposePar" -case "$c2" > /dev/null 2>&1 || fail "decomposePar np2threads"
+mpi 2 -x OMP_NUM_THREADS=2 "$bin/mpmFoam" -case "$c2" -parallel > "$c2/log" 2>&1 || fail "np2 x 2 threads"
+for r in 0 1; do
+    cmp -s "$work/np2/processor$r/0.004/particles.vtu" "$c2/processor$r/0.004/particles.vtu" ||
+        fail "processor$r differs between 1 and 2 threads per rank"
+done
+echo "np2: 1 and 2 threads per rank bit-identical"
+
 # The reconstructed latest time restarts a serial run.
 rm -rf "$work/np2/0" "$work/np2/0.002" "$work/np2/0.004"
 "$bin/reconstructPar" -case "$work/np2" -latestTime > /dev/null 2>&1 || fail "reconstructPar -latestTime"
