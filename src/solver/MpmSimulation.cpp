@@ -5,7 +5,6 @@
 #include "core/Parallel.hpp"
 #include "io/ParticleIO.hpp"
 #include "io/PvtuFile.hpp"
-#include "parallel/Migration.hpp"
 #include "solver/GravityPreload.hpp"
 #include "solver/StateMeasures.hpp"
 
@@ -81,49 +80,17 @@ template <int dim> void MpmSimulation<dim>::setUpParallel() {
     if (!constraints_.empty()) refuse("constant/velocityConstraints");
     if (fBar_) refuse("antiLocking: fBar (system/mpmSchemes)");
     if (wallContactIsState()) refuse("a unilateral wall with a USF/MUSL stress update");
-    decomposition_ = std::make_unique<Decomposition<dim>>(
-        Decomposition<dim>::read(case_, "constant/decomposition", grid_.blocks()));
-    if (decomposition_->size() != comm_.size())
-        throw InputError(case_.root().string() + "/constant/decomposition", 0, "numberOfSubdomains",
-                         "the case is decomposed into " + std::to_string(decomposition_->size()) +
-                             " subdomains but the run has " + std::to_string(comm_.size()) +
-                             " ranks: run mpirun -np " + std::to_string(decomposition_->size()) +
-                             ", or decomposePar again");
-    halo_ = std::make_unique<GridHalo<dim>>(comm_, *decomposition_);
-    decomposeDict_ = std::make_unique<Dictionary>(case_.read("system/decomposeParDict"));
-    rebalance_ = RebalanceSettings::read(*decomposeDict_);
+    subdomain_ = std::make_unique<Subdomain<dim>>(case_, grid_, comm_);
     if (comm_.master())
         rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(
             global_, bodies_.empty() ? std::vector<std::string>{"particles"}
                                      : std::vector<std::string>{"particles", "rigidBodies"});
 }
 
-template <int dim> void MpmSimulation<dim>::rebalance() {
+template <int dim> void MpmSimulation<dim>::exchangePoints() {
+    auto timer = timer_(PhaseTimer::Comm);
     const long step = preloading_ ? preloadIndex_ : time_->index();
-    if (step % rebalance_.interval != 0) return;
-    auto timer = timer_(PhaseTimer::Comm);
-    const double n = static_cast<double>(particles_.size());
-    const double mean = comm_.sum(n) / comm_.size();
-    const double before = mean > 0 ? comm_.max(n) / mean : 1.0;
-    if (before <= rebalance_.maxImbalance) return;
-    std::vector<Index> load(static_cast<std::size_t>(grid_.numBlocks()), 0);
-    for (const Vec<dim>& x : particles_.x) {
-        const Vec<dim> xh = (x - grid_.origin()) * grid_.invH();
-        if (grid_.insideArrays(xh)) ++load[static_cast<std::size_t>(grid_.blockOf(xh))];
-    }
-    comm_.sum(load.data(), load.size()); // integers: exact in any order
-    Decomposition<dim> next = Decomposition<dim>::build(*decomposeDict_, grid_.blocks(), load);
-    const std::vector<Index> after = next.loads(load);
-    const double most = static_cast<double>(*std::max_element(after.begin(), after.end()));
-    if (most / mean >= before) return; // the blocks allow no better: no migration for nothing
-    *decomposition_ = std::move(next);
-    log() << "Rebalanced at step " << step << ": points per rank max/mean " << before << " -> "
-          << most / mean << '\n';
-}
-
-template <int dim> void MpmSimulation<dim>::migrateParticles() {
-    auto timer = timer_(PhaseTimer::Comm);
-    if (migrate(particles_, grid_, *decomposition_, comm_, scratch_)) buildMaterialLists();
+    if (subdomain_->exchangePoints(particles_, step, scratch_)) buildMaterialLists();
 }
 
 template <int dim>
@@ -143,7 +110,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         ParticleSeeder<dim> seeder(grid_, materials_, gravity_);
         seeder.seed(case_.read("constant/particles"), particles_);
         bc_.wrap(particles_);
-        if (decomposition_) keepOwned(particles_, grid_, *decomposition_, comm_.rank());
+        if (subdomain_) subdomain_->keepOwned(particles_);
         preload_ = seeder.preload();
         time.setStart(time.startFrom() == "startTime" ? time.startTime() : 0.0, 0, 0.0);
     } else {
@@ -153,10 +120,10 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
                                  " differs from rank 0's: the processor "
                                  "directories hold different times (remove the incomplete ones)");
         io::readParticles(case_, from, particles_, materials_.size());
-        if (decomposition_ && case_.exists(from + "/uniform/decomposition")) // rebalanced
-            *decomposition_ = Decomposition<dim>::read(case_, from + "/uniform/decomposition",
-                                                       grid_.blocks());
-        if (decomposition_) migrate(particles_, grid_, *decomposition_, comm_, scratch_);
+        if (subdomain_) {
+            subdomain_->readTime(case_, from);
+            subdomain_->exchangePoints(particles_, -1, scratch_); // no rebalance at step -1
+        }
         time.readTimeDict(from);
         if (!bodies_.empty()) bodies_.read(case_, from);
         gravity_ = acceleration_->at(time.value());
@@ -237,7 +204,7 @@ template <int dim> void MpmSimulation<dim>::gravityPreload() {
     damping_ = savedDamping;
     preloading_ = false;
     timer_.reset();
-    if (halo_) halo_->resetBytes();
+    if (subdomain_) subdomain_->halo().resetBytes();
 }
 
 template <int dim> void MpmSimulation<dim>::buildMaterialLists() {
@@ -319,10 +286,7 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
             buildMaterialLists();
             removed_ += left;
         }
-    if (decomposition_) {
-        if (rebalance_.enabled()) rebalance();
-        migrateParticles();
-    }
+    if (subdomain_) exchangePoints();
     const Index outside = sort_.update(particles_, grid_);
     failIfAny(outside >= 0, "sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
@@ -347,27 +311,25 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
     auto timer = timer_(PhaseTimer::P2G);
     std::vector<Index> blocks = sort_.activeNodeBlocks();
     bc_.closeActiveBlocks(blocks);
-    if (halo_) {
+    if (subdomain_) {
         auto comm = timer_(PhaseTimer::Comm);
-        blocks = halo_->exchangeBlocks(blocks);
+        blocks = subdomain_->halo().exchangeBlocks(blocks);
     }
     grid_.activate(std::move(blocks)); // zero, and the sparse grid follows the material
-    if (decomposition_)                // the conditions act on the nodes this rank updates
-        bc_.selectActive(grid_, [&](Index b) {
-            return grid_.isActive(b) && decomposition_->owner(b) == comm_.rank();
-        });
+    if (subdomain_)                    // the conditions act on the nodes this rank updates
+        bc_.selectActive(grid_, [&](Index b) { return grid_.isActive(b) && subdomain_->owns(b); });
     else
         bc_.selectActive(grid_);
     const std::vector<Index>& activeBlocks = grid_.activeBlocks();
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
-    if (halo_) {
+    if (subdomain_) {
         auto comm = timer_(PhaseTimer::Comm);
         if (order_->forceWithMomentum())
-            halo_->sum(grid_.mass, grid_.momentum, grid_.force);
+            subdomain_->halo().sum(grid_.mass, grid_.momentum, grid_.force);
         else
-            halo_->sum(grid_.mass, grid_.momentum);
+            subdomain_->halo().sum(grid_.mass, grid_.momentum);
     }
     // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
     bc_.fold(grid_, activeBlocks, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
@@ -405,9 +367,9 @@ template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
     });
     bc_.constrain(grid_, grid_.vOld, time_->value() - dt_);
     applyVelocityConstraints(grid_.vOld, time_->value() - dt_);
-    if (halo_) {
+    if (subdomain_) {
         auto comm = timer_(PhaseTimer::Comm);
-        halo_->copy(grid_.vOld);
+        subdomain_->halo().copy(grid_.vOld);
     }
 }
 
@@ -419,9 +381,9 @@ template <int dim> void MpmSimulation<dim>::velocityGradient() {
 template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
     auto timer = timer_(PhaseTimer::P2G);
     transfer_->scatterForce(particles_, grid_, sort_);
-    if (halo_) {
+    if (subdomain_) {
         auto comm = timer_(PhaseTimer::Comm);
-        halo_->sum(grid_.force);
+        subdomain_->halo().sum(grid_.force);
     }
     bc_.fold(grid_, grid_.activeBlocks(), FoldForce);
 }
@@ -433,9 +395,9 @@ template <int dim> void MpmSimulation<dim>::remapMomentum() {
         grid_.momentum[i].setZero();
     });
     transfer_->scatter(particles_, grid_, sort_, false);
-    if (halo_) {
+    if (subdomain_) {
         auto comm = timer_(PhaseTimer::Comm);
-        halo_->sum(grid_.mass, grid_.momentum);
+        subdomain_->halo().sum(grid_.mass, grid_.momentum);
     }
     bc_.fold(grid_, grid_.activeBlocks(), FoldMassMomentum);
 }
@@ -461,9 +423,9 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     });
     bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
     applyVelocityConstraints(grid_.v, time_->value());
-    if (halo_) {
+    if (subdomain_) {
         auto comm = timer_(PhaseTimer::Comm);
-        halo_->copy(grid_.vOld, grid_.v);
+        subdomain_->halo().copy(grid_.vOld, grid_.v);
         comm_.sum(reactions_[0].data(), static_cast<int>(2 * dim * dim)); // contiguous Vecs
     }
 }
@@ -580,10 +542,7 @@ template <int dim> void MpmSimulation<dim>::write() {
         *time_,
         [this, &cloud](const std::filesystem::path& dir) {
             io::writeVtu(dir / "particles.vtu", cloud);
-            if (rebalance_.enabled()) { // the decomposition of this time, for a restart
-                std::filesystem::create_directories(dir / "uniform");
-                decomposition_->write(dir / "uniform" / "decomposition");
-            }
+            if (subdomain_) subdomain_->writeTime(dir); // a rebalanced decomposition
             if (!acceleration_->isConstant())
                 io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
                                     accelerationWork_);
@@ -647,7 +606,7 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
         os << std::defaultfloat << std::setprecision(4) << "Ranks: " << comm_.size()
            << ", points per rank max/mean " << (mean > 0 ? most / mean : 1.0) << ", comm "
            << *std::max_element(comm.begin(), comm.end()) << " s (slowest rank), halo "
-           << halo_->bytesSent() / std::max<long>(timer_.steps(), 1) / 1024.0
+           << subdomain_->halo().bytesSent() / std::max<long>(timer_.steps(), 1) / 1024.0
            << " KiB per step sent by rank 0\n";
     }
     if (const Index removed = comm_.sum(removed_); removed > 0)

@@ -12,8 +12,7 @@
 #include "materials/Material.hpp"
 #include "monitors/FunctionObject.hpp"
 #include "parallel/Comm.hpp"
-#include "parallel/Decomposition.hpp"
-#include "parallel/GridHalo.hpp"
+#include "parallel/Subdomain.hpp"
 #include "particles/BlockSort.hpp"
 #include "particles/ParticleSeeder.hpp"
 #include "particles/Particles.hpp"
@@ -90,14 +89,12 @@ private:
     // Parallel runs (docs/parallel.md); nothing of it runs in a serial one.
     /// Check the case uses only what a parallel run supports; read the decomposition.
     void setUpParallel();
-    /// Points whose block another rank owns go there (after G2P: at the start of the step).
-    void migrateParticles();
-    /// Every RebalanceSettings::interval steps (by step index): decompose again by the current
-    /// points when the largest rank holds more than maxImbalance times the mean.
-    void rebalance();
+    /// Rebalance when due, then send the points whose block another rank owns there (after G2P:
+    /// at the start of the step).
+    void exchangePoints();
     /// The blocks whose nodes this rank updates: its owned active blocks, or all active ones.
     const std::vector<Index>& updateBlocks() const {
-        return halo_ ? halo_->owned() : grid_.activeBlocks();
+        return subdomain_ ? subdomain_->halo().owned() : grid_.activeBlocks();
     }
     /// Collective failure check: stops every rank when `bad` holds on any (fail on each).
     void failIfAny(bool bad, const std::string& phase, Index particle, const std::string& what);
@@ -125,10 +122,7 @@ private:
     Case global_; ///< the root case (case_ itself in a serial run): postProcessing, .pvtu
     RunOptions options_;
     const Comm& comm_;
-    std::unique_ptr<Decomposition<dim>> decomposition_; ///< parallel runs only
-    std::unique_ptr<GridHalo<dim>> halo_;               ///< parallel runs only
-    std::unique_ptr<Dictionary> decomposeDict_;         ///< to decompose again (rebalance)
-    RebalanceSettings rebalance_;
+    std::unique_ptr<Subdomain<dim>> subdomain_; ///< parallel runs only
     Time* time_ = nullptr;
 
     Grid<dim> grid_;

@@ -317,5 +317,17 @@ TEST_F(TimeTest, TimeDictRoundTrip) {
     EXPECT_EQ(back.name(), name);
 }
 
+TEST_F(TimeTest, AStopSeenByAnyRankStopsEveryRank) {
+    Time& t = makeTime("endTime: 1\ndeltaT: 0.1\nwriteInterval: 10\n");
+    ASSERT_TRUE(t.run());
+    t.advance(1e300); // a step that is not a write time
+    ASSERT_TRUE(t.run());
+    // This rank sees no request; the agreement (Comm::any) says another rank saw one.
+    t.setAgreement([](bool) { return true; });
+    EXPECT_FALSE(t.run());
+    EXPECT_TRUE(t.stopping());
+    EXPECT_TRUE(t.writeAtEnd());
+}
+
 } // namespace
 } // namespace mpm
