@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Parallel runs (docs/parallel.md) on glassDrop40Coarse (3D sand, a coupled rigid sphere) and the
 # OpenFOAM workflow's error paths:
-#  1. 200 steps on 2 ranks (bisection) and 3 ranks (hierarchical) against the serial run: the
+#  1. 200 steps on 1, 2 ranks (bisection), 3 (hierarchical) and 4 (simple) against the serial run: the
 #     same points, positions within 1e-10 of the box, the sphere's state (body forces summed over
 #     the ranks) within 1e-10 relative; ParaView's parallel reader opens the .pvtu of every time;
+#     bodies in contact with each other (tests/cases/bodyContact2D) on 2 ranks as in serial;
 #     the pieces are bit-identical with 1 and 2 threads per rank; reconstructPar -latestTime
 #     gives a serial time directory a serial run restarts from.
 #  2. errors, each a clear message, a non-zero exit and no hang: -np unlike the decomposition,
@@ -33,10 +34,13 @@ make_case() { # make_case DIR DECOMPOSEPARDICT
 # 1. Agreement with the serial run.
 make_case "$work/serial" "numberOfSubdomains: 1\nmethod: bisection\n"
 "$bin/mpmFoam" -case "$work/serial" > "$work/serial/log" 2>&1 || fail "serial run"
-for n in 2 3; do
+for n in 1 2 3 4; do
     c=$work/np$n
-    if [ $n = 2 ]; then d="numberOfSubdomains: 2\nmethod: bisection\n"
-    else d="numberOfSubdomains: 3\nmethod: hierarchical\nhierarchicalCoeffs: {n: [3, 1, 1]}\n"; fi
+    case $n in
+        3) d="numberOfSubdomains: 3\nmethod: hierarchical\nhierarchicalCoeffs: {n: [3, 1, 1]}\n" ;;
+        4) d="numberOfSubdomains: 4\nmethod: simple\nsimpleCoeffs: {n: [2, 2, 1]}\n" ;;
+        *) d="numberOfSubdomains: $n\nmethod: bisection\n" ;;
+    esac
     make_case "$c" "$d"
     "$bin/decomposePar" -case "$c" > "$c/log.decomposePar" 2>&1 || fail "decomposePar np$n"
     mpi $n "$bin/mpmFoam" -case "$c" -parallel > "$c/log" 2>&1 || { tail "$c/log"; fail "np$n run"; }
@@ -63,7 +67,7 @@ def read(path, parallel=False):
 
 
 bad = []
-for n in (2, 3):
+for n in (1, 2, 3, 4):
     for t in ("0", "0.002", "0.004"):
         ia, xa = read(os.path.join(work, "serial", t, "particles.vtu"))
         ib, xb = read(os.path.join(work, "np%d" % n, t, "particles.vtu"))
@@ -89,6 +93,30 @@ for n in (2, 3):
 if bad:
     sys.exit("FAIL: " + "; ".join(bad))
 PY
+# Body-body contact (replicated bodies) across two subdomains: tests/cases/bodyContact2D.
+for c in serialBodies np2bodies; do
+    cp -r "$root/tests/cases/bodyContact2D" "$work/$c"
+    printf "numberOfSubdomains: 2\nmethod: simple\nsimpleCoeffs: {n: [2, 1]}\n" \
+        > "$work/$c/system/decomposeParDict"
+done
+"$bin/mpmFoam" -case "$work/serialBodies" > "$work/serialBodies/log" 2>&1 || fail "bodyContact2D"
+"$bin/decomposePar" -case "$work/np2bodies" > /dev/null 2>&1 || fail "decomposePar bodyContact2D"
+mpi 2 "$bin/mpmFoam" -case "$work/np2bodies" -parallel > "$work/np2bodies/log" 2>&1 ||
+    fail "bodyContact2D on 2 ranks"
+"$py" - "$work" <<'PY'
+import glob, os, sys
+import numpy as np
+work = sys.argv[1]
+s, p = (np.loadtxt(glob.glob(os.path.join(work, c, "postProcessing/bodies/*/bodies.dat"))[0])
+        for c in ("serialBodies", "np2bodies"))
+# Each column against its own largest value (1e-6 of the table's for pure rounding noise).
+scale = np.maximum(np.abs(s).max(axis=0), 1e-6 * np.abs(s).max())
+err = (np.abs(s - p) / scale).max() if s.shape == p.shape else np.inf
+print("bodyContact2D np2: body states (%d rows) max relative difference %.2e" % (len(s), err))
+if err > 1e-10:
+    sys.exit("FAIL: bodyContact2D body states differ by %.2e" % err)
+PY
+
 # The same ranks on 2 threads each: bit-identical pieces.
 c2=$work/np2threads
 make_case "$c2" "numberOfSubdomains: 2\nmethod: bisection\n"
