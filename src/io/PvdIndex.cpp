@@ -2,6 +2,7 @@
 #include "io/PvdIndex.hpp"
 
 #include "io/ParticleFile.hpp"
+#include "io/XmlFile.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -21,34 +22,6 @@ std::string formatTime(double time) {
     const auto result =
         std::to_chars(buffer, buffer + sizeof(buffer), time, std::chars_format::general, 17);
     return std::string(buffer, result.ptr);
-}
-
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        default:
-            out += c;
-            break;
-        }
-    }
-    return out;
 }
 
 std::string unescapeXml(const std::string& text) {

@@ -10,35 +10,6 @@ namespace mpm::io {
 
 namespace {
 
-/// `text` with XML's five special characters replaced by their entities.
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        default:
-            out += c;
-            break;
-        }
-    }
-    return out;
-}
-
 /// The byte order the VTK writers write: the machine's own.
 const char* byteOrder() {
     const std::uint16_t one = 1;

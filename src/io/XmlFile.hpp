@@ -26,6 +26,9 @@ private:
     std::string message_;
 };
 
+/// `text` with XML's five special characters (& < > " ') replaced by their entities.
+std::string escapeXml(const std::string& text);
+
 /// `file` + ".tmp": where a file is written before it is renamed into place.
 std::filesystem::path tmpName(const std::filesystem::path& file);
 /// Remove a file, ignoring errors.

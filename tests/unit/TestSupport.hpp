@@ -5,14 +5,18 @@
 #include "core/SymmetricEigen.hpp"
 #include "core/Types.hpp"
 #include "grid/Grid.hpp"
+#include "io/ParticleFile.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -105,6 +109,39 @@ template <int dim> void activateAll(Grid<dim>& g) {
     for (Index b = 0; b < g.numBlocks(); ++b)
         all[b] = b;
     g.activate(std::move(all));
+}
+
+/// The whole content of `file`.
+inline std::string readText(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// Points of ids i at (i, 2 i, −i) with the arrays id (Int64), mass 0.5 + i/3 (Float64),
+/// velocity (i, i + 1/4, −1e5 i) (Float64 × 3) and an Int64 array `name` whose `components`
+/// values are extra(i): every value a function of the id, so a reordered cloud can be checked.
+inline io::PointCloud idCloud(const std::vector<std::int64_t>& ids, const std::string& name,
+                              int components,
+                              const std::function<std::vector<std::int64_t>(std::int64_t)>& extra) {
+    io::PointCloud cloud;
+    io::PointArray id{"id", 1, {}, {}};
+    io::PointArray mass{"mass", 1, {}, {}};
+    io::PointArray velocity{"velocity", 3, {}, {}};
+    io::PointArray other{name, components, {}, {}};
+    id.integer = other.integer = true;
+    for (const std::int64_t i : ids) {
+        const auto x = static_cast<double>(i);
+        cloud.points.insert(cloud.points.end(), {x, 2 * x, -x});
+        id.i64.push_back(i);
+        mass.f64.push_back(0.5 + x / 3.0);
+        velocity.f64.insert(velocity.f64.end(), {x, x + 0.25, -1e5 * x});
+        const std::vector<std::int64_t> e = extra(i);
+        other.i64.insert(other.i64.end(), e.begin(), e.end());
+    }
+    cloud.arrays = {id, mass, velocity, other};
+    return cloud;
 }
 
 } // namespace mpm::test

@@ -22,16 +22,10 @@ namespace {
 using mpm::io::PointArray;
 using mpm::io::PointCloud;
 namespace fs = std::filesystem;
+using mpm::test::readText;
 
 /// A fresh, empty folder per test, removed afterwards.
 using ParticleFileTest = mpm::test::TempDirTest;
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 /// The XML header of a `.vtu` (everything before the appended raw data).
 std::string xmlHeader(const fs::path& file) {

@@ -28,36 +28,16 @@ namespace {
 using mpm::io::PointArray;
 using mpm::io::PointCloud;
 namespace fs = std::filesystem;
+using mpm::test::readText;
 
 /// A fresh, empty folder per test, removed afterwards.
 using PvtuFileTest = mpm::test::TempDirTest;
 
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-/// `ids.size()` points at (id, 2 id, −id) with arrays id (Int64), mass (Float64), velocity
-/// (Float64 × 3) and flags (Int64 × 2), each a function of the id.
+/// Clouds with an Int64 × 2 array `flags` (10 i, −i) (test::idCloud).
 PointCloud makeCloud(const std::vector<std::int64_t>& ids) {
-    PointCloud cloud;
-    PointArray id{"id", 1, {}, {}};
-    PointArray mass{"mass", 1, {}, {}};
-    PointArray velocity{"velocity", 3, {}, {}};
-    PointArray flags{"flags", 2, {}, {}};
-    id.integer = flags.integer = true;
-    for (const std::int64_t i : ids) {
-        const auto x = static_cast<double>(i);
-        cloud.points.insert(cloud.points.end(), {x, 2 * x, -x});
-        id.i64.push_back(i);
-        mass.f64.push_back(0.5 + x / 3.0);
-        velocity.f64.insert(velocity.f64.end(), {x, x + 0.25, -1e5 * x});
-        flags.i64.insert(flags.i64.end(), {i * 10, -i});
-    }
-    cloud.arrays = {id, mass, velocity, flags};
-    return cloud;
+    return mpm::test::idCloud(ids, "flags", 2, [](std::int64_t i) {
+        return std::vector<std::int64_t>{i * 10, -i};
+    });
 }
 
 struct ParallelRead {

@@ -18,38 +18,17 @@ namespace {
 using mpm::io::PointArray;
 using mpm::io::PointCloud;
 namespace fs = std::filesystem;
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using mpm::test::readText;
 
 void writeText(const fs::path& file, const std::string& text) {
     fs::create_directories(file.parent_path());
     std::ofstream(file, std::ios::binary) << text;
 }
 
-/// Points at (id, 2 id, −id) with arrays id (Int64), mass (Float64), velocity (Float64 × 3)
-/// and material (Int64), each a function of the id.
+/// Clouds with an Int64 array `material` (i mod 3) (test::idCloud).
 PointCloud makeCloud(const std::vector<std::int64_t>& ids) {
-    PointCloud cloud;
-    PointArray id{"id", 1, {}, {}};
-    PointArray mass{"mass", 1, {}, {}};
-    PointArray velocity{"velocity", 3, {}, {}};
-    PointArray material{"material", 1, {}, {}};
-    id.integer = material.integer = true;
-    for (const std::int64_t i : ids) {
-        const auto x = static_cast<double>(i);
-        cloud.points.insert(cloud.points.end(), {x, 2 * x, -x});
-        id.i64.push_back(i);
-        mass.f64.push_back(0.5 + x / 3.0);
-        velocity.f64.insert(velocity.f64.end(), {x, x + 0.25, -1e5 * x});
-        material.i64.push_back(i % 3);
-    }
-    cloud.arrays = {id, mass, velocity, material};
-    return cloud;
+    return mpm::test::idCloud(ids, "material", 1,
+                              [](std::int64_t i) { return std::vector<std::int64_t>{i % 3}; });
 }
 
 /// A parallel run's case: processor0..2 with times 0.05 and 0.1, ids shuffled across the
