@@ -63,6 +63,13 @@ public:
                 q[images_[k]] = q[owners_[k]];
     }
 
+    /// Visit the images of block b: fn(image node, its owner node), images ascending.
+    template <class Fn> void forImagesOf(Index b, Fn&& fn) const {
+        if (!any_) return;
+        for (Index k = imageStart_[b]; k < imageStart_[b + 1]; ++k)
+            fn(images_[k], owners_[k]);
+    }
+
     /// Add to the (sorted) list of active node blocks every block holding a node of the same
     /// class as a node of a listed block (its owner or an image), and keep it sorted: then
     /// fold writes only active blocks, and every owner and all its images are zeroed, updated

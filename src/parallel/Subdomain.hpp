@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "boundary/PeriodicLattice.hpp"
 #include "case/Case.hpp"
 #include "grid/Grid.hpp"
 #include "parallel/Comm.hpp"
@@ -11,6 +12,9 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace mpm {
 
@@ -37,12 +41,21 @@ public:
     /// this rank's points changed. `scratch`: the reorder buffers.
     bool exchangePoints(Particles<dim>& p, long step, PermuteBuffers<dim>& scratch);
 
+    /// Periodic faces across the ranks (PeriodicLattice::fold of a serial run), after the halo
+    /// sum: every image node of this rank's active blocks adds its values of `fields`
+    /// (NodeArrays) onto its owner node — here, or on the rank owning the owner's block, which
+    /// adds the ranks' images in rank order after its own — and takes back the owner's total.
+    template <class... Fields>
+    void foldPeriodic(const PeriodicLattice<dim>& lattice, Fields&... fields);
+
     /// True if this rank owns block b.
     bool owns(Index block) const { return decomposition_.owner(block) == comm_.rank(); }
     GridHalo<dim>& halo() { return *halo_; }
     const GridHalo<dim>& halo() const { return *halo_; }
 
 private:
+    static constexpr Index Nb = Grid<dim>::NodesPerBlock;
+
     /// Decompose again by the current points when the largest rank holds more than
     /// RebalanceSettings::maxImbalance times the mean (and the blocks allow better).
     void rebalance(const Particles<dim>& p, long step);
@@ -54,5 +67,63 @@ private:
     RebalanceSettings rebalance_;
     std::unique_ptr<GridHalo<dim>> halo_; ///< refers to decomposition_
 };
+
+template <int dim>
+template <class... Fields>
+void Subdomain<dim>::foldPeriodic(const PeriodicLattice<dim>& lattice, Fields&... fields) {
+    if (!lattice.any()) return;
+    const int me = comm_.rank();
+    const std::size_t n = static_cast<std::size_t>(comm_.size());
+    std::vector<std::pair<Index, Index>> local;               // (image, owner), both here
+    std::vector<std::vector<std::pair<Index, Index>>> out(n); // owner on rank r
+    for (Index b : halo_->owned())
+        lattice.forImagesOf(b, [&](Index image, Index owner) {
+            const int r = decomposition_.owner(owner / Nb);
+            (r == me ? local : out[static_cast<std::size_t>(r)]).emplace_back(image, owner);
+        });
+    // The images' values to the owners' ranks: the owner node, then each field's value.
+    std::vector<std::vector<char>> send(n);
+    for (std::size_t r = 0; r < n; ++r) {
+        ByteWriter w(send[r]);
+        for (const auto& [image, owner] : out[r]) {
+            w.put(owner);
+            (w.put(&fields[image], 1), ...);
+        }
+    }
+    const std::vector<std::vector<char>> recv = comm_.exchange(send);
+    for (const auto& [image, owner] : local)
+        ((fields[owner] += fields[image]), ...);
+    std::vector<std::vector<Index>> in(n); // owner nodes of rank r's images, in its order
+    for (std::size_t r = 0; r < n; ++r) {
+        if (static_cast<int>(r) == me) continue;
+        ByteReader read(recv[r]);
+        while (!read.done()) {
+            const Index owner = read.get<Index>();
+            in[r].push_back(owner);
+            auto add = [&](auto& f) {
+                std::remove_reference_t<decltype(f[owner])> x;
+                read.get(&x, 1);
+                f[owner] += x;
+            };
+            (add(fields), ...);
+        }
+    }
+    // The owners' totals back to the images.
+    for (const auto& [image, owner] : local)
+        ((fields[image] = fields[owner]), ...);
+    std::vector<std::vector<char>> back(n);
+    for (std::size_t r = 0; r < n; ++r) {
+        ByteWriter w(back[r]);
+        for (Index owner : in[r])
+            (w.put(&fields[owner], 1), ...);
+    }
+    const std::vector<std::vector<char>> totals = comm_.exchange(back);
+    for (std::size_t r = 0; r < n; ++r) {
+        if (static_cast<int>(r) == me) continue;
+        ByteReader read(totals[r]);
+        for (const auto& [image, owner] : out[r])
+            (read.get(&fields[image], 1), ...);
+    }
+}
 
 } // namespace mpm

@@ -76,7 +76,6 @@ template <int dim> void MpmSimulation<dim>::setUpParallel() {
     const auto refuse = [](const std::string& what) {
         throw InputError("-parallel", 0, "", what + " is not available in parallel runs yet");
     };
-    if (bc_.anyPeriodic()) refuse("a periodic face (constant/grid)");
     if (!constraints_.empty()) refuse("constant/velocityConstraints");
     if (fBar_) refuse("antiLocking: fBar (system/mpmSchemes)");
     if (wallContactIsState()) refuse("a unilateral wall with a USF/MUSL stress update");
@@ -320,7 +319,6 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
         bc_.selectActive(grid_, [&](Index b) { return grid_.isActive(b) && subdomain_->owns(b); });
     else
         bc_.selectActive(grid_);
-    const std::vector<Index>& activeBlocks = grid_.activeBlocks();
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
@@ -332,8 +330,24 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
             subdomain_->halo().sum(grid_.mass, grid_.momentum);
     }
     // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
-    bc_.fold(grid_, activeBlocks, order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
+    foldPeriodic(order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
     if (!constraints_.empty()) markConstrainedNodes();
+}
+
+template <int dim> void MpmSimulation<dim>::foldPeriodic(unsigned fields) {
+    if (!bc_.anyPeriodic()) return;
+    if (!subdomain_) {
+        bc_.fold(grid_, grid_.activeBlocks(), fields);
+        return;
+    }
+    auto comm = timer_(PhaseTimer::Comm);
+    const PeriodicLattice<dim>& lattice = bc_.lattice();
+    if (fields == FoldAll)
+        subdomain_->foldPeriodic(lattice, grid_.mass, grid_.momentum, grid_.force);
+    else if (fields == FoldMassMomentum)
+        subdomain_->foldPeriodic(lattice, grid_.mass, grid_.momentum);
+    else
+        subdomain_->foldPeriodic(lattice, grid_.force);
 }
 
 template <int dim> void MpmSimulation<dim>::markConstrainedNodes() {
@@ -385,7 +399,7 @@ template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
         auto comm = timer_(PhaseTimer::Comm);
         subdomain_->halo().sum(grid_.force);
     }
-    bc_.fold(grid_, grid_.activeBlocks(), FoldForce);
+    foldPeriodic(FoldForce);
 }
 
 template <int dim> void MpmSimulation<dim>::remapMomentum() {
@@ -399,7 +413,7 @@ template <int dim> void MpmSimulation<dim>::remapMomentum() {
         auto comm = timer_(PhaseTimer::Comm);
         subdomain_->halo().sum(grid_.mass, grid_.momentum);
     }
-    bc_.fold(grid_, grid_.activeBlocks(), FoldMassMomentum);
+    foldPeriodic(FoldMassMomentum);
 }
 
 template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {

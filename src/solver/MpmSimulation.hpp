@@ -66,6 +66,9 @@ private:
     /// `constant/velocityConstraints`: which nodes each entry reaches (after P2G) and
     /// v_a ← w_a(t) on them.
     void markConstrainedNodes();
+    /// Periodic faces: image nodes onto their owners and back (`fields`, a FoldField set),
+    /// across the ranks in a parallel run; nothing without periodic faces.
+    void foldPeriodic(unsigned fields);
     void applyVelocityConstraints(NodeArray<Vec<dim>>& v, double t);
     // Phases a stress-update order places (StressPhases).
     void gridVelocityFromMomentum() override;

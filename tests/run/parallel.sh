@@ -5,11 +5,12 @@
 #     same points, positions within 1e-10 of the box, the sphere's state (body forces summed over
 #     the ranks) within 1e-10 relative; ParaView's parallel reader opens the .pvtu of every time;
 #     bodies in contact with each other (tests/cases/bodyContact2D) on 2 ranks as in serial;
+#     periodic faces cut by the decomposition (periodicBox2D, periodicBody2D on 3 ranks);
 #     the pieces are bit-identical with 1 and 2 threads per rank; reconstructPar -latestTime
 #     gives a serial time directory a serial run restarts from.
 #  2. errors, each a clear message, a non-zero exit and no hang: -np unlike the decomposition,
 #     a missing processor directory, -parallel without mpirun, -parallel on a case never
-#     decomposed, a feature the parallel step does not support (periodic faces), decomposePar
+#     decomposed, a feature the parallel step does not support (velocity constraints), decomposePar
 #     over existing processor directories (without -force) and with a bad method,
 #     reconstructPar without processor directories.
 set -euo pipefail
@@ -117,6 +118,48 @@ if err > 1e-10:
     sys.exit("FAIL: bodyContact2D body states differ by %.2e" % err)
 PY
 
+# Periodic faces across the subdomains: the images of one rank's nodes fold onto another's.
+for c in periodicBox2D periodicBody2D; do
+    for n in 1 3; do
+        d=$work/$c.np$n
+        cp -r "$root/tests/cases/$c" "$d"
+        if [ $n = 3 ]; then
+            printf "numberOfSubdomains: 3\nmethod: simple\nsimpleCoeffs: {n: [3, 1]}\n" \
+                > "$d/system/decomposeParDict"
+            "$bin/decomposePar" -case "$d" > /dev/null 2>&1 || fail "decomposePar $c"
+            mpi 3 "$bin/mpmFoam" -case "$d" -parallel > "$d/log" 2>&1 || fail "$c on 3 ranks"
+            "$bin/reconstructPar" -case "$d" -latestTime > /dev/null 2>&1 || fail "reconstructPar $c"
+        else
+            "$bin/mpmFoam" -case "$d" > "$d/log" 2>&1 || fail "$c serial"
+        fi
+    done
+done
+"$py" - "$work" <<'PY'
+import glob, os, sys
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+work = sys.argv[1]
+
+
+def read(path):
+    r = vtkXMLUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    out = r.GetOutput()
+    ids = vtk_to_numpy(out.GetPointData().GetArray("id"))
+    return vtk_to_numpy(out.GetPoints().GetData())[np.argsort(ids)]
+
+
+for case in ("periodicBox2D", "periodicBody2D"):
+    a = read(os.path.join(work, case + ".np1", "0.2", "particles.vtu"))
+    b = read(os.path.join(work, case + ".np3", "0.2", "particles.vtu"))
+    err = np.abs(a - b).max() / 0.4 if a.shape == b.shape else np.inf
+    print("%s np3 (periodic x cut in 3): max |dx|/L = %.2e" % (case, err))
+    if err > 1e-10:
+        sys.exit("FAIL: %s differs by %.2e" % (case, err))
+PY
+
 # The same ranks on 2 threads each: bit-identical pieces.
 c2=$work/np2threads
 make_case "$c2" "numberOfSubdomains: 2\nmethod: bisection\n"
@@ -161,10 +204,10 @@ expect "bisection" "$work/e6"
 [ -d "$work/fresh/processor1" ] || fail "a failed decomposePar -force removed the old decomposition"
 if "$bin/reconstructPar" -case "$work/serial" > "$work/e7" 2>&1; then fail "reconstructPar without processors"; fi
 expect "processor" "$work/e7"
-p=$work/periodic
-cp -r "$root/tests/cases/periodicBox2D" "$p"
+p=$work/constrained
+cp -r "$root/tests/cases/velocityConstraint2D" "$p"
 printf "numberOfSubdomains: 2\nmethod: bisection\n" > "$p/system/decomposeParDict"
-"$bin/decomposePar" -case "$p" > /dev/null 2>&1 || fail "decomposePar periodic"
-if mpi 2 "$bin/mpmFoam" -case "$p" -parallel > "$work/e8" 2>&1; then fail "periodic ran in parallel"; fi
-expect "not available in parallel runs yet" "$work/e8"
+"$bin/decomposePar" -case "$p" > /dev/null 2>&1 || fail "decomposePar velocityConstraint2D"
+if mpi 2 "$bin/mpmFoam" -case "$p" -parallel > "$work/e8" 2>&1; then fail "constraints ran in parallel"; fi
+expect "constant/velocityConstraints is not available in parallel runs yet" "$work/e8"
 echo "PASS parallel"
