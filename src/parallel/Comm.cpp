@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cstdint>
 #include <stdexcept>
 
@@ -106,18 +107,39 @@ bool Comm::any(bool x) const {
     return out != 0;
 }
 
-std::vector<std::vector<char>> Comm::exchange(const std::vector<std::vector<char>>& send) const {
+std::vector<std::vector<char>> Comm::exchange(const std::vector<std::vector<char>>& send,
+                                              const std::vector<int>* neighbours) const {
     if (!mpi_) return send;
     const std::size_t n = static_cast<std::size_t>(size_);
-    std::vector<std::int64_t> sendCount(n), recvCount(n);
+    std::vector<std::int64_t> sendCount(n), recvCount(n, 0);
     for (std::size_t r = 0; r < n; ++r)
         sendCount[r] = static_cast<std::int64_t>(send[r].size());
-    check(MPI_Alltoall(sendCount.data(), 1, MPI_INT64_T, recvCount.data(), 1, MPI_INT64_T,
-                       MPI_COMM_WORLD),
-          "MPI_Alltoall");
-    std::vector<std::vector<char>> recv(n);
     std::vector<MPI_Request> requests;
     requests.reserve(2 * n);
+    if (neighbours) { // sizes from and to the neighbours only
+        for (std::size_t r = 0; r < n; ++r)
+            assert((send[r].empty() || std::binary_search(neighbours->begin(), neighbours->end(),
+                                                          static_cast<int>(r))) &&
+                   "a message to a rank that is not a neighbour");
+        for (const int r : *neighbours) {
+            requests.emplace_back();
+            check(MPI_Irecv(&recvCount[static_cast<std::size_t>(r)], 1, MPI_INT64_T, r, 6,
+                            MPI_COMM_WORLD, &requests.back()),
+                  "MPI_Irecv");
+            requests.emplace_back();
+            check(MPI_Isend(&sendCount[static_cast<std::size_t>(r)], 1, MPI_INT64_T, r, 6,
+                            MPI_COMM_WORLD, &requests.back()),
+                  "MPI_Isend");
+        }
+        check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+              "MPI_Waitall");
+        requests.clear();
+    } else {
+        check(MPI_Alltoall(sendCount.data(), 1, MPI_INT64_T, recvCount.data(), 1, MPI_INT64_T,
+                           MPI_COMM_WORLD),
+              "MPI_Alltoall");
+    }
+    std::vector<std::vector<char>> recv(n);
     constexpr int Tag = 7;
     for (std::size_t r = 0; r < n; ++r) {
         recv[r].resize(static_cast<std::size_t>(recvCount[r]));

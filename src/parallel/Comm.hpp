@@ -61,8 +61,12 @@ public:
     }
 
     /// Personalised exchange: `send[r]` goes to rank r; returns what each rank sent to this one
-    /// (`recv[r]` from rank r). send.size() == size().
-    std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& send) const;
+    /// (`recv[r]` from rank r). send.size() == size(). With `neighbours` (ascending, this rank
+    /// excluded, a symmetric relation: r lists me when I list r) only those ranks exchange,
+    /// their sizes first, point to point, and every other send[r] must be empty; without, the
+    /// sizes go through one MPI_Alltoall (every rank: at start-up and after a rebalance).
+    std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& send,
+                                            const std::vector<int>* neighbours = nullptr) const;
     /// Rank 0's `text` on every rank.
     std::string broadcast(const std::string& text) const;
     void barrier() const;

@@ -24,7 +24,7 @@ std::vector<Index> GridHalo<dim>::exchangeBlocks(const std::vector<Index>& reach
     std::vector<std::vector<char>> send(n);
     for (std::size_t r = 0; r < n; ++r)
         ByteWriter(send[r]).put(ghostOut_[r].data(), ghostOut_[r].size());
-    const std::vector<std::vector<char>> recv = comm_.exchange(send);
+    const std::vector<std::vector<char>> recv = comm_.exchange(send, neighbours_);
     for (std::size_t r = 0; r < n; ++r) {
         ghostIn_[r].resize(recv[r].size() / sizeof(Index));
         ByteReader(recv[r]).get(ghostIn_[r].data(), ghostIn_[r].size());

@@ -43,6 +43,9 @@ public:
         transfer(ghostIn_, ghostOut_, false, fields...);
     }
 
+    /// The ranks this one exchanges with (Comm::exchange), or nullptr: all.
+    void setNeighbours(const std::vector<int>* neighbours) { neighbours_ = neighbours; }
+
     /// Bytes sent in the last step's halo exchanges (the communication volume, report()).
     double bytesSent() const { return bytes_; }
     void resetBytes() { bytes_ = 0; }
@@ -65,7 +68,7 @@ private:
         }
         for (const auto& s : send)
             bytes_ += static_cast<double>(s.size());
-        const std::vector<std::vector<char>> recv = comm_.exchange(send);
+        const std::vector<std::vector<char>> recv = comm_.exchange(send, neighbours_);
         for (std::size_t r = 0; r < n; ++r) {
             if (to[r].empty() || static_cast<int>(r) == comm_.rank()) continue;
             ByteReader in(recv[r]);
@@ -88,6 +91,7 @@ private:
     std::vector<std::vector<Index>> ghostOut_; ///< [r]: my reached blocks that rank r owns
     std::vector<std::vector<Index>> ghostIn_;  ///< [r]: my blocks that rank r reaches
     std::vector<Index> owned_;
+    const std::vector<int>* neighbours_ = nullptr;
     double bytes_ = 0;
 };
 

@@ -32,10 +32,11 @@ void keepOwned(Particles<dim>& p, const Grid<dim>& g, const Decomposition<dim>& 
 /// Migration after G2P: every point whose block another rank owns goes to that rank with all
 /// its fields (Particles::forEachArray, the field table's order); the points received are
 /// appended in rank order, so the result does not depend on timing. Returns true when this
-/// rank's points changed. `scratch`: the reorder buffers.
+/// rank's points changed. `scratch`: the reorder buffers; `neighbours`: the ranks points can go
+/// to (Comm::exchange), or nullptr: any.
 template <int dim>
 bool migrate(Particles<dim>& p, const Grid<dim>& g, const Decomposition<dim>& d, const Comm& comm,
-             PermuteBuffers<dim>& scratch) {
+             PermuteBuffers<dim>& scratch, const std::vector<int>* neighbours = nullptr) {
     const int me = comm.rank();
     const std::size_t nr = static_cast<std::size_t>(comm.size());
     std::vector<std::vector<Index>> leaving(nr);
@@ -58,7 +59,7 @@ bool migrate(Particles<dim>& p, const Grid<dim>& g, const Decomposition<dim>& d,
                 w.put(&a[static_cast<std::size_t>(i)], 1);
         });
     }
-    const std::vector<std::vector<char>> recv = comm.exchange(send);
+    const std::vector<std::vector<char>> recv = comm.exchange(send, neighbours);
     const bool left = keep.size() != p.size();
     if (left) p.permute(keep, scratch);
     bool arrived = false;

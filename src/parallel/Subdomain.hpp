@@ -10,6 +10,7 @@
 #include "particles/Particles.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -24,8 +25,10 @@ template <int dim> class Subdomain {
 public:
     /// Read `constant/decomposition` of `cs` (this rank's processor case) and
     /// system/decomposeParDict (its `rebalance`); an InputError when the decomposition has
-    /// another number of subdomains than the run has ranks.
-    Subdomain(const Case& cs, const Grid<dim>& grid, const Comm& comm);
+    /// another number of subdomains than the run has ranks. `closeBlocks` adds to a sorted list
+    /// of blocks those periodic faces relate to them (BoundaryConditions::closeActiveBlocks).
+    Subdomain(const Case& cs, const Grid<dim>& grid, const Comm& comm,
+              std::function<void(std::vector<Index>&)> closeBlocks);
     Subdomain(const Subdomain&) = delete; // the halo refers to the decomposition
     Subdomain& operator=(const Subdomain&) = delete;
 
@@ -57,14 +60,22 @@ private:
     static constexpr Index Nb = Grid<dim>::NodesPerBlock;
 
     /// Decompose again by the current points when the largest rank holds more than
-    /// RebalanceSettings::maxImbalance times the mean (and the blocks allow better).
-    void rebalance(const Particles<dim>& p, long step);
+    /// RebalanceSettings::maxImbalance times the mean (and the blocks allow better); true when
+    /// it did.
+    bool rebalance(const Particles<dim>& p, long step);
+    /// The ranks owning a block next to one of this rank's (or related to one by a periodic
+    /// face), made symmetric: all a step's messages go to them, since a stencil reaches one
+    /// block and a point moves at most one cell a step (the CFL check).
+    void findNeighbours();
 
     const Comm& comm_;
     const Grid<dim>& grid_;
     Decomposition<dim> decomposition_;
     Dictionary dict_; ///< system/decomposeParDict, to decompose again
     RebalanceSettings rebalance_;
+    std::function<void(std::vector<Index>&)> closeBlocks_;
+    std::vector<int> neighbours_;
+    bool started_ = false;                ///< the first migration (a restart) may send anywhere
     std::unique_ptr<GridHalo<dim>> halo_; ///< refers to decomposition_
 };
 
@@ -90,7 +101,7 @@ void Subdomain<dim>::foldPeriodic(const PeriodicLattice<dim>& lattice, Fields&..
             (w.put(&fields[image], 1), ...);
         }
     }
-    const std::vector<std::vector<char>> recv = comm_.exchange(send);
+    const std::vector<std::vector<char>> recv = comm_.exchange(send, &neighbours_);
     for (const auto& [image, owner] : local)
         ((fields[owner] += fields[image]), ...);
     std::vector<std::vector<Index>> in(n); // owner nodes of rank r's images, in its order
@@ -117,7 +128,7 @@ void Subdomain<dim>::foldPeriodic(const PeriodicLattice<dim>& lattice, Fields&..
         for (Index owner : in[r])
             (w.put(&fields[owner], 1), ...);
     }
-    const std::vector<std::vector<char>> totals = comm_.exchange(back);
+    const std::vector<std::vector<char>> totals = comm_.exchange(back, &neighbours_);
     for (std::size_t r = 0; r < n; ++r) {
         if (static_cast<int>(r) == me) continue;
         ByteReader read(totals[r]);

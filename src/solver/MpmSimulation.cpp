@@ -79,7 +79,8 @@ template <int dim> void MpmSimulation<dim>::setUpParallel() {
     if (!constraints_.empty()) refuse("constant/velocityConstraints");
     if (fBar_) refuse("antiLocking: fBar (system/mpmSchemes)");
     if (wallContactIsState()) refuse("a unilateral wall with a USF/MUSL stress update");
-    subdomain_ = std::make_unique<Subdomain<dim>>(case_, grid_, comm_);
+    subdomain_ = std::make_unique<Subdomain<dim>>(
+        case_, grid_, comm_, [this](std::vector<Index>& blocks) { bc_.closeActiveBlocks(blocks); });
     if (comm_.master())
         rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(
             global_, bodies_.empty() ? std::vector<std::string>{"particles"}

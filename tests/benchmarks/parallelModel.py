@@ -11,8 +11,7 @@ evenly in cube-shaped subdomains of 4³-node blocks (3D, 8 points per cell, USL)
   halo     = 2 × ghost blocks × 64 nodes × 104 B / bandwidth + 3 exchanges × 26 neighbours ×
              latency (the sums out, the velocities back: 56 + 48 B per node, measured below);
              ghost blocks of a cube of b blocks per side: (b + 2)³ − b³;
-  reduce   = 10 collectives × ⌈log₂ N⌉ × latency, and the personalised exchanges' MPI_Alltoall of
-             counts (3 per step, N × 8 B each).
+  reduce   = 10 collectives × ⌈log₂ N⌉ × latency (the exchanges go to neighbours only).
 The measured inputs (tests/benchmarks/parallel.sh, block3D on 2 ranks): the rate per core
 (particle-updates per second of one 1-thread rank, communication excluded), the thread
 efficiency of 2 threads, and the halo bytes per step, which the byte model reproduces.
@@ -52,8 +51,7 @@ for nodes in [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048]:
     compute = n / (a.rate * a.cores * a.threads)
     g = ghost_blocks(n) if nodes > 1 else 0.0
     halo = (2 * g * BYTES_PER_GHOST_BLOCK / a.bandwidth + 3 * 26 * a.latency) if nodes > 1 else 0.0
-    reduce_ = (10 * math.ceil(math.log2(nodes)) * a.latency + 3 * (nodes * 8 / a.bandwidth
-                                                                + math.ceil(math.log2(nodes)) * a.latency)) if nodes > 1 else 0.0
+    reduce_ = 10 * math.ceil(math.log2(nodes)) * a.latency if nodes > 1 else 0.0
     rows.append((nodes, n, compute, halo, reduce_, compute + halo + reduce_))
 
 t1 = rows[0][5]
