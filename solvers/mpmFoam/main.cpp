@@ -19,11 +19,13 @@ int main(int argc, char* argv[]) {
         parallel = parallel || std::strcmp(argv[i], "-parallel") == 0;
     Comm comm = parallel ? Comm::initWorld(argc, argv) : Comm();
     quietLog(!comm.master()); // OpenFOAM's master-only log
-    const Application app(argc, argv, "mpmFoam",
-                          "Explicit MPM for soils and granular media (2D and 3D).",
-                          {{"-dry-run", "check the case and take one step; write nothing"},
-                           {"-noFunctionObjects", "do not run controlDict's functions"},
-                           {"-parallel", "run decomposed (mpirun -np N mpmFoam -parallel)"}});
+    const Application app(
+        argc, argv, "mpmFoam", "Explicit MPM for soils and granular media (2D and 3D).",
+        {{"-dry-run", "check the case and take one step; write nothing"},
+         {"-noFunctionObjects", "do not run controlDict's functions"},
+         {"-parallel", "run decomposed (mpirun -np N mpmFoam -parallel)"}},
+        "Signals: SIGUSR1 writes now and continues; SIGUSR2 or SIGTERM write and "
+        "stop.\nA file named 'stop' in the case directory also writes and stops.");
     const int rc = app.run([&] {
         const Case root(app.caseDir());
         const Case cs = comm.parallel() ? root.processor(comm.rank()) : root;

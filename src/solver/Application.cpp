@@ -19,8 +19,9 @@
 namespace mpm {
 
 Application::Application(int argc, char* argv[], std::string name, std::string summary,
-                         std::vector<Option> switches)
-    : name_(std::move(name)), summary_(std::move(summary)), switches_(std::move(switches)) {
+                         std::vector<Option> switches, std::string footer)
+    : name_(std::move(name)), summary_(std::move(summary)), footer_(std::move(footer)),
+      switches_(std::move(switches)) {
     std::cout.setf(std::ios::unitbuf); // the log is followed live (tail -f log.mpmFoam)
     for (int i = 0; i < argc; ++i)
         commandLine_ += (i ? " " : "") + std::string(argv[i]);
@@ -37,6 +38,15 @@ Application::Application(int argc, char* argv[], std::string name, std::string s
         } else if (std::any_of(switches_.begin(), switches_.end(),
                                [&](const Option& o) { return o.first == a; })) {
             given_.push_back(a);
+        } else if (std::any_of(switches_.begin(), switches_.end(), [&](const Option& o) {
+                       return o.first.compare(0, a.size() + 2, a + " <") == 0;
+                   })) {
+            if (i + 1 >= argc) {
+                badOption_ = a + " needs a value";
+                break;
+            }
+            given_.push_back(a);
+            values_.emplace_back(a, argv[++i]);
         } else {
             badOption_ = "Invalid option: " + a;
             break;
@@ -48,6 +58,12 @@ bool Application::has(const std::string& option) const {
     return std::find(given_.begin(), given_.end(), option) != given_.end();
 }
 
+std::string Application::value(const std::string& option) const {
+    for (const auto& [o, v] : values_)
+        if (o == option) return v;
+    return {};
+}
+
 void Application::usage(std::ostream& os) const {
     os << "\nUsage: " << name_ << " [OPTIONS]\n\n" << summary_ << "\n\noptions:\n";
     std::vector<Option> all = switches_;
@@ -56,8 +72,7 @@ void Application::usage(std::ostream& os) const {
     std::sort(all.begin(), all.end());
     for (const auto& [o, d] : all)
         os << "  " << std::left << std::setw(22) << o << d << '\n';
-    os << "\nSignals: SIGUSR1 writes now and continues; SIGUSR2 or SIGTERM write and stop.\n"
-          "A file named 'stop' in the case directory also writes and stops.\n\n";
+    os << '\n' << footer_ << (footer_.empty() ? "" : "\n\n");
 }
 
 int Application::run(const std::function<void()>& body) const {

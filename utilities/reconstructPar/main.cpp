@@ -57,35 +57,9 @@ void index(const fs::path& root, const std::string& series, const std::string& f
     }
 }
 
-/// `-time <t>` removed from the command line (Application takes switches without values):
-/// returns its value, "" when absent; `missing` tells whether `-time` came without a value.
-std::string takeTimeOption(int& argc, char* argv[], bool& missing) {
-    std::string value;
-    missing = false;
-    int out = 1;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "-case" && i + 1 < argc) {
-            argv[out++] = argv[i++];
-            argv[out++] = argv[i];
-        } else if (a == "-time") {
-            if (i + 1 < argc)
-                value = argv[++i];
-            else
-                missing = true;
-        } else {
-            argv[out++] = argv[i];
-        }
-    }
-    argc = out;
-    return value;
-}
-
 } // namespace
 
 int main(int argc, char* argv[]) {
-    bool timeMissing = false;
-    const std::string timeOption = takeTimeOption(argc, argv, timeMissing);
     const Application app(
         argc, argv, "reconstructPar",
         "Merge the processor<N>/<time>/particles.vtu of a parallel run into <time>/particles.vtu "
@@ -94,7 +68,7 @@ int main(int argc, char* argv[]) {
         {{"-latestTime", "reconstruct only the latest time"},
          {"-time <t>", "reconstruct only time <t> (a time directory name or value)"}});
     return app.run([&] {
-        if (timeMissing) throw std::runtime_error("-time needs a time (e.g. -time 0.1)");
+        const std::string timeOption = app.value("-time");
         if (!timeOption.empty() && app.has("-latestTime"))
             throw std::runtime_error("-time and -latestTime exclude each other");
         const Case cs(app.caseDir());
