@@ -51,6 +51,8 @@ public:
     template <class... Fields>
     void foldPeriodic(const PeriodicLattice<dim>& lattice, Fields&... fields);
 
+    /// True when the decomposition may change during the run (decomposeParDict `rebalance`).
+    bool rebalances() const { return rebalance_.enabled(); }
     /// True if this rank owns block b.
     bool owns(Index block) const { return decomposition_.owner(block) == comm_.rank(); }
     GridHalo<dim>& halo() { return *halo_; }

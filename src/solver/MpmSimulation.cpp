@@ -72,15 +72,22 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
 }
 
 template <int dim> void MpmSimulation<dim>::setUpParallel() {
-    // What the parallel step does not do yet is refused, not run wrongly (docs/parallel.md).
-    const auto refuse = [](const std::string& what) {
-        throw InputError("-parallel", 0, "", what + " is not available in parallel runs yet");
-    };
-    if (!constraints_.empty()) refuse("constant/velocityConstraints");
-    if (fBar_) refuse("antiLocking: fBar (system/mpmSchemes)");
-    if (wallContactIsState()) refuse("a unilateral wall with a USF/MUSL stress update");
     subdomain_ = std::make_unique<Subdomain<dim>>(
         case_, grid_, comm_, [this](std::vector<Index>& blocks) { bc_.closeActiveBlocks(blocks); });
+    // A unilateral wall's contact under USF is restart state on the nodes a rank owns: it
+    // would not follow the nodes to their new owner after a rebalance (docs/parallel.md).
+    if (wallContactIsState() && subdomain_->rebalances())
+        throw InputError("system/decomposeParDict", 0, "rebalance",
+                         "rebalancing is not available with a unilateral wall (slip, friction, "
+                         "velocity) under a USF stress update: the walls' contact state "
+                         "stays with the rank that owned its nodes; remove rebalance or use USL");
+    if (fBar_) // F̄'s nodal average: complete on every node a rank reads, ghosts included
+        fBar_->setNodalFold([this](NodeArray<double>& q) {
+            auto comm = timer_(PhaseTimer::Comm);
+            subdomain_->halo().sum(q);
+            if (bc_.anyPeriodic()) subdomain_->foldPeriodic(bc_.lattice(), q);
+            subdomain_->halo().copy(q, grid_.mass);
+        });
     if (comm_.master())
         rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(
             global_, bodies_.empty() ? std::vector<std::string>{"particles"}
@@ -359,6 +366,7 @@ template <int dim> void MpmSimulation<dim>::markConstrainedNodes() {
             inMaterial_[p] = particles_.material[p] == m ? 1.0 : 0.0;
         grid_.forEachNode(grid_.activeBlocks(), [&](Index i) { reach_[k][i] = 0.0; });
         transfer_->scatterScalar(inMaterial_, reach_[k], sort_);
+        if (subdomain_) subdomain_->halo().sum(reach_[k]); // complete on the nodes updated here
     }
 }
 
@@ -368,7 +376,7 @@ void MpmSimulation<dim>::applyVelocityConstraints(NodeArray<Vec<dim>>& v, double
     for (std::size_t k = 0; k < constraints_.size(); ++k) {
         const Vec<dim> w = constraints_.velocity(k, t);
         const NodeArray<double>& reach = reach_[k];
-        grid_.forEachNode(grid_.activeBlocks(), [&](Index i) {
+        grid_.forEachNode(updateBlocks(), [&](Index i) {
             if (reach[i] > 0) constraints_.set(k, w, v[i]);
         });
     }

@@ -5,12 +5,14 @@
 #     same points, positions within 1e-10 of the box, the sphere's state (body forces summed over
 #     the ranks) within 1e-10 relative; ParaView's parallel reader opens the .pvtu of every time;
 #     bodies in contact with each other (tests/cases/bodyContact2D) on 2 ranks as in serial;
-#     periodic faces cut by the decomposition (periodicBox2D, periodicBody2D on 3 ranks);
+#     periodic faces cut by the decomposition (periodicBox2D, periodicBody2D), velocity
+#     constraints and F-bar (velocityConstraint2D, restart3D) on 3 ranks; unilateral walls
+#     under USF resumed from the processor directories bit-identical (slipWalls2D);
 #     the pieces are bit-identical with 1 and 2 threads per rank; reconstructPar -latestTime
 #     gives a serial time directory a serial run restarts from.
 #  2. errors, each a clear message, a non-zero exit and no hang: -np unlike the decomposition,
 #     a missing processor directory, -parallel without mpirun, -parallel on a case never
-#     decomposed, a feature the parallel step does not support (velocity constraints), decomposePar
+#     decomposed, rebalancing with a unilateral wall under USF (not supported), decomposePar
 #     over existing processor directories (without -force) and with a bad method,
 #     reconstructPar without processor directories.
 set -euo pipefail
@@ -118,17 +120,19 @@ if err > 1e-10:
     sys.exit("FAIL: bodyContact2D body states differ by %.2e" % err)
 PY
 
-# Periodic faces across the subdomains: the images of one rank's nodes fold onto another's.
-for c in periodicBox2D periodicBody2D; do
+# Periodic faces across the subdomains (the images of one rank's nodes fold onto another's),
+# velocity constraints, F-bar (nodal averages over the halo): 3 ranks against serial.
+for c in periodicBox2D periodicBody2D velocityConstraint2D restart3D; do
     for n in 1 3; do
         d=$work/$c.np$n
         cp -r "$root/tests/cases/$c" "$d"
         if [ $n = 3 ]; then
-            printf "numberOfSubdomains: 3\nmethod: simple\nsimpleCoeffs: {n: [3, 1]}\n" \
-                > "$d/system/decomposeParDict"
+            if [ $c = restart3D ]; then m="method: bisection"
+            else m="method: simple\nsimpleCoeffs: {n: [3, 1]}"; fi
+            printf "numberOfSubdomains: 3\n$m\n" > "$d/system/decomposeParDict"
             "$bin/decomposePar" -case "$d" > /dev/null 2>&1 || fail "decomposePar $c"
             mpi 3 "$bin/mpmFoam" -case "$d" -parallel > "$d/log" 2>&1 || fail "$c on 3 ranks"
-            "$bin/reconstructPar" -case "$d" -latestTime > /dev/null 2>&1 || fail "reconstructPar $c"
+            "$bin/reconstructPar" -case "$d" > /dev/null 2>&1 || fail "reconstructPar $c"
         else
             "$bin/mpmFoam" -case "$d" > "$d/log" 2>&1 || fail "$c serial"
         fi
@@ -151,14 +155,45 @@ def read(path):
     return vtk_to_numpy(out.GetPoints().GetData())[np.argsort(ids)]
 
 
-for case in ("periodicBox2D", "periodicBody2D"):
-    a = read(os.path.join(work, case + ".np1", "0.2", "particles.vtu"))
-    b = read(os.path.join(work, case + ".np3", "0.2", "particles.vtu"))
+def last(case):
+    times = [d for d in os.listdir(case) if d.replace(".", "").replace("e-", "").isdigit()
+             and os.path.exists(os.path.join(case, d, "particles.vtu"))]
+    return max(times, key=float)
+
+
+for case, what in (("periodicBox2D", "periodic x cut in 3"), ("periodicBody2D", "the same"),
+                   ("velocityConstraint2D", "constrained points"), ("restart3D", "F-bar")):
+    serial = os.path.join(work, case + ".np1")
+    t = last(serial)
+    a = read(os.path.join(serial, t, "particles.vtu"))
+    b = read(os.path.join(work, case + ".np3", t, "particles.vtu"))
     err = np.abs(a - b).max() / 0.4 if a.shape == b.shape else np.inf
-    print("%s np3 (periodic x cut in 3): max |dx|/L = %.2e" % (case, err))
+    print("%s np3 (%s), t = %s: max |dx|/L = %.2e" % (case, what, t, err))
     if err > 1e-10:
         sys.exit("FAIL: %s differs by %.2e" % (case, err))
 PY
+
+# Unilateral walls under USF (slipWalls2D): the walls' contact is restart state of each rank's
+# nodes; a run resumed from its processor directories ends bit-identical to an uninterrupted one.
+for c in walls wallsResumed; do
+    cp -r "$root/tests/cases/slipWalls2D" "$work/$c"
+    printf "numberOfSubdomains: 2\nmethod: simple\nsimpleCoeffs: {n: [2, 1]}\n" \
+        > "$work/$c/system/decomposeParDict"
+    "$bin/decomposePar" -case "$work/$c" > /dev/null 2>&1 || fail "decomposePar slipWalls2D"
+done
+mpi 2 "$bin/mpmFoam" -case "$work/walls" -parallel > "$work/walls/log" 2>&1 || fail "slipWalls2D"
+sed -i 's/^endTime:[^#]*/endTime: 0.1 /' "$work/wallsResumed/system/controlDict"
+mpi 2 "$bin/mpmFoam" -case "$work/wallsResumed" -parallel > "$work/wallsResumed/log" 2>&1 ||
+    fail "slipWalls2D to 0.1"
+[ -f "$work/wallsResumed/processor0/0.1/uniform/wallContact" ] || fail "no wall contact written"
+sed -i 's/^endTime:[^#]*/endTime: 0.2 /' "$work/wallsResumed/system/controlDict"
+mpi 2 "$bin/mpmFoam" -case "$work/wallsResumed" -parallel > "$work/wallsResumed/log2" 2>&1 ||
+    fail "slipWalls2D resumed"
+for r in 0 1; do
+    cmp -s "$work/walls/processor$r/0.2/particles.vtu" "$work/wallsResumed/processor$r/0.2/particles.vtu" ||
+        fail "slipWalls2D processor$r: the resumed run differs from the uninterrupted one"
+done
+echo "slipWalls2D np2 (USF, unilateral walls): resumed run bit-identical"
 
 # The same ranks on 2 threads each: bit-identical pieces.
 c2=$work/np2threads
@@ -204,10 +239,13 @@ expect "bisection" "$work/e6"
 [ -d "$work/fresh/processor1" ] || fail "a failed decomposePar -force removed the old decomposition"
 if "$bin/reconstructPar" -case "$work/serial" > "$work/e7" 2>&1; then fail "reconstructPar without processors"; fi
 expect "processor" "$work/e7"
-p=$work/constrained
-cp -r "$root/tests/cases/velocityConstraint2D" "$p"
-printf "numberOfSubdomains: 2\nmethod: bisection\n" > "$p/system/decomposeParDict"
-"$bin/decomposePar" -case "$p" > /dev/null 2>&1 || fail "decomposePar velocityConstraint2D"
-if mpi 2 "$bin/mpmFoam" -case "$p" -parallel > "$work/e8" 2>&1; then fail "constraints ran in parallel"; fi
-expect "constant/velocityConstraints is not available in parallel runs yet" "$work/e8"
+p=$work/usfRebalance
+cp -r "$root/tests/cases/slipWalls2D" "$p"
+sed -i 's/^stressUpdate:.*/stressUpdate: USF/' "$p/system/mpmSchemes"
+grep -q "^stressUpdate: USF" "$p/system/mpmSchemes" || echo "stressUpdate: USF" >> "$p/system/mpmSchemes"
+printf "numberOfSubdomains: 2\nmethod: bisection\nrebalance: {maxImbalance: 1.2}\n" \
+    > "$p/system/decomposeParDict"
+"$bin/decomposePar" -case "$p" > /dev/null 2>&1 || fail "decomposePar slipWalls2D"
+if mpi 2 "$bin/mpmFoam" -case "$p" -parallel > "$work/e8" 2>&1; then fail "USF walls rebalanced"; fi
+expect "rebalancing is not available with a unilateral wall" "$work/e8"
 echo "PASS parallel"
