@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/BodyContact.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace mpm {
 
@@ -20,44 +22,110 @@ void ContactProbes<dim>::update(const std::vector<std::unique_ptr<RigidBody<dim>
 }
 
 template <int dim>
+std::vector<std::array<int, 2>>
+candidatePairs(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies, double margin,
+               bool periodic) {
+    const int n = static_cast<int>(bodies.size());
+    std::vector<std::array<int, 2>> pairs;
+    auto both = [&](int i, int j) {
+        return bodies[i]->motion() == Motion::Fixed && bodies[j]->motion() == Motion::Fixed;
+    };
+    if (periodic || n <= 2) { // every pair
+        for (int i = 0; i < n; ++i)
+            for (int j = i + 1; j < n; ++j)
+                if (!both(i, j)) pairs.push_back({i, j});
+        return pairs;
+    }
+    std::vector<double> radius(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        radius[static_cast<std::size_t>(i)] = bodies[i]->shape().boundingRadius();
+    std::vector<double> sorted = radius;
+    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+    const double large = 4.0 * sorted[static_cast<std::size_t>(n / 2)];
+    double rSmall = 0;
+    for (double r : radius)
+        if (r <= large) rSmall = std::max(rSmall, r);
+    const double cell = 2.0 * rSmall + margin;
+    // Small bodies sorted by cell key (coordinates packed 21 bits each), then index.
+    auto coord = [&](int i, int d) {
+        return static_cast<std::int64_t>(std::floor(bodies[i]->position()[d] / cell));
+    };
+    auto key = [](const std::array<std::int64_t, 3>& c) {
+        constexpr std::int64_t Bias = std::int64_t(1) << 20, Mask = (std::int64_t(1) << 21) - 1;
+        return ((c[0] + Bias) & Mask) | (((c[1] + Bias) & Mask) << 21) |
+               (((c[2] + Bias) & Mask) << 42);
+    };
+    std::vector<std::pair<std::int64_t, int>> binned;
+    std::vector<int> big;
+    for (int i = 0; i < n; ++i) {
+        if (radius[static_cast<std::size_t>(i)] > large) {
+            big.push_back(i);
+            continue;
+        }
+        std::array<std::int64_t, 3> c{0, 0, 0};
+        for (int d = 0; d < dim; ++d)
+            c[static_cast<std::size_t>(d)] = coord(i, d);
+        binned.emplace_back(key(c), i);
+    }
+    std::sort(binned.begin(), binned.end());
+    for (const auto& [k, i] : binned) {
+        std::array<std::int64_t, 3> c{0, 0, 0};
+        for (int d = 0; d < dim; ++d)
+            c[static_cast<std::size_t>(d)] = coord(i, d);
+        for (int m = 0; m < (dim == 2 ? 9 : 27); ++m) { // the 3^dim neighbouring cells
+            std::array<std::int64_t, 3> o = c;
+            for (int d = 0, code = m; d < dim; ++d, code /= 3)
+                o[static_cast<std::size_t>(d)] += code % 3 - 1;
+            const std::int64_t ok = key(o);
+            auto at = std::lower_bound(binned.begin(), binned.end(), std::make_pair(ok, i + 1));
+            for (; at != binned.end() && at->first == ok; ++at)
+                if (!both(i, at->second)) pairs.push_back({i, at->second});
+        }
+    }
+    for (int b : big)
+        for (int i = 0; i < n; ++i)
+            if (i != b && !both(i, b) && (radius[static_cast<std::size_t>(i)] <= large || i > b))
+                pairs.push_back({std::min(i, b), std::max(i, b)});
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+}
+
+template <int dim>
 void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
                        const ContactProbes<dim>& probes, std::vector<ProbeContact<dim>>& contacts,
                        const PeriodicLattice<dim>* periodic) {
     contacts.clear();
-    const int n = static_cast<int>(bodies.size());
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j) {
-            const RigidBody<dim>& a = *bodies[i];
-            const RigidBody<dim>& b = *bodies[j];
-            if (a.motion() == Motion::Fixed && b.motion() == Motion::Fixed) continue;
-            const double reach = a.shape().boundingRadius() + b.shape().boundingRadius();
-            // Minimum image only where one image alone can touch (2 reach < L).
-            bool image = periodic != nullptr;
-            for (int d = 0; d < dim && image; ++d)
-                image = !periodic->periodic(d) || 2 * reach < periodic->period()[d];
-            const Vec<dim> ab = image ? periodic->separation(a.position(), b.position())
-                                      : a.position() - b.position();
-            if (ab.squaredNorm() >= reach * reach) continue;
-            const bool aProbes = probes.points[i].size() <= probes.points[j].size();
-            const RigidBody<dim>& prober = aProbes ? a : b;
-            const RigidBody<dim>& target = aProbes ? b : a;
-            const std::vector<Vec<dim>>& points = probes.points[aProbes ? i : j];
-            const std::vector<double>& radii = probes.radii[aProbes ? i : j];
-            // The prober's image nearest the target, and back: shift = x_p − image.
-            const Vec<dim> origin = image
-                                        ? periodic->imageNear(prober.position(), target.position())
-                                        : prober.position();
-            const Vec<dim> shift = prober.position() - origin;
-            for (std::size_t k = 0; k < points.size(); ++k) {
-                const Vec<dim> x = origin + prober.rotation() * points[k];
-                Vec<dim> normal;
-                const double overlap = radii[k] - target.distance(x, normal);
-                if (overlap <= 0) continue;
-                const Vec<dim> c = x - (radii[k] - 0.5 * overlap) * normal;
-                contacts.push_back({aProbes ? i : j, aProbes ? j : i, static_cast<int>(k), overlap,
-                                    normal, c, image ? Vec<dim>(c + shift) : c});
-            }
+    for (const auto& [i, j] : candidatePairs(bodies, 0.0, periodic != nullptr)) {
+        const RigidBody<dim>& a = *bodies[i];
+        const RigidBody<dim>& b = *bodies[j];
+        const double reach = a.shape().boundingRadius() + b.shape().boundingRadius();
+        // Minimum image only where one image alone can touch (2 reach < L).
+        bool image = periodic != nullptr;
+        for (int d = 0; d < dim && image; ++d)
+            image = !periodic->periodic(d) || 2 * reach < periodic->period()[d];
+        const Vec<dim> ab =
+            image ? periodic->separation(a.position(), b.position()) : a.position() - b.position();
+        if (ab.squaredNorm() >= reach * reach) continue;
+        const bool aProbes = probes.points[i].size() <= probes.points[j].size();
+        const RigidBody<dim>& prober = aProbes ? a : b;
+        const RigidBody<dim>& target = aProbes ? b : a;
+        const std::vector<Vec<dim>>& points = probes.points[aProbes ? i : j];
+        const std::vector<double>& radii = probes.radii[aProbes ? i : j];
+        // The prober's image nearest the target, and back: shift = x_p − image.
+        const Vec<dim> origin =
+            image ? periodic->imageNear(prober.position(), target.position()) : prober.position();
+        const Vec<dim> shift = prober.position() - origin;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Vec<dim> x = origin + prober.rotation() * points[k];
+            Vec<dim> normal;
+            const double overlap = radii[k] - target.distance(x, normal);
+            if (overlap <= 0) continue;
+            const Vec<dim> c = x - (radii[k] - 0.5 * overlap) * normal;
+            contacts.push_back({aProbes ? i : j, aProbes ? j : i, static_cast<int>(k), overlap,
+                                normal, c, image ? Vec<dim>(c + shift) : c});
         }
+    }
 }
 
 namespace {
@@ -166,6 +234,10 @@ template class BodyContactLaw<2>;
 template class BodyContactLaw<3>;
 template struct ContactProbes<2>;
 template struct ContactProbes<3>;
+template std::vector<std::array<int, 2>>
+candidatePairs(const std::vector<std::unique_ptr<RigidBody<2>>>&, double, bool);
+template std::vector<std::array<int, 2>>
+candidatePairs(const std::vector<std::unique_ptr<RigidBody<3>>>&, double, bool);
 template void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<2>>>&,
                                 const ContactProbes<2>&, std::vector<ProbeContact<2>>&,
                                 const PeriodicLattice<2>*);

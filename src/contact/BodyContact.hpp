@@ -74,6 +74,18 @@ template <int dim> struct ContactProbes {
     void update(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies);
 };
 
+/// The pairs i < j (ascending) of `bodies` whose bounding spheres, inflated by `margin`, may
+/// overlap, fixed–fixed pairs left out: a superset of the pairs with
+/// |x_i − x_j| < R_i + R_j + margin, in O(N log N), not O(N²). The bodies are binned in cells
+/// of 2 R + margin (R: the largest bounding radius of the bodies no larger than 4 × the median);
+/// a body meets those of its own and the 3^dim neighbouring cells, and the few larger ones (a
+/// floor, a silo wall) meet every body. Without a grid (periodic faces, or two bodies at most)
+/// every pair is listed. The caller tests each pair's distance.
+template <int dim>
+std::vector<std::array<int, 2>>
+candidatePairs(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies, double margin,
+               bool periodic);
+
 /// Every touching probe of every pair i < j of `bodies` (fixed pairs skipped), in a fixed order;
 /// with `periodic`, through the minimum image of each pair (BodyContactLaw).
 template <int dim>

@@ -92,7 +92,13 @@ const std::vector<std::array<int, 2>>& SdemContact::neighbours(const BodyList& b
         rebuild = moved.squaredNorm() > 0.25 * vd_ * vd_;
     }
     if (!rebuild) return pairs_;
-    pairs_ = allNear(bodies);
+    pairs_.clear(); // the candidates (binned: O(N log N)) within reach, in pair order
+    for (const auto& [i, j] : candidatePairs(bodies, vd_, this->periodic_ != nullptr)) {
+        const RigidBody<2>& a = *bodies[i];
+        const RigidBody<2>& b = *bodies[j];
+        const double reach = a.shape().boundingRadius() + b.shape().boundingRadius() + vd_;
+        if (separation(a, b).squaredNorm() < reach * reach) pairs_.push_back({i, j});
+    }
     built_.clear();
     for (const auto& b : bodies)
         built_.push_back(b->position());

@@ -29,10 +29,11 @@ namespace mpm {
 /// m* = m_i m_j/(m_i + m_j) (a fixed body's mass infinite); none by default, as the paper.
 ///
 /// Neighbour (Verlet) list [§4.2]: pairs whose bounding circles inflated by V_d overlap, fixed–
-/// fixed pairs skipped; rebuilt when a body has moved more than V_d/2 since the last build (so no
-/// touching pair is missed: the gap closes by < V_d). The list is not restart state: it is rebuilt
-/// on the first step, and contacts are summed in pair order, so results do not depend on it.
-/// Periodic faces: pairs meet through their minimum image as in findProbeContacts.
+/// fixed pairs skipped, found by binning the bodies (candidatePairs: O(N log N)); rebuilt when a
+/// body has moved more than V_d/2 since the last build (so no touching pair is missed: the gap
+/// closes by < V_d). The list is not restart state: it is rebuilt on the first step, and contacts
+/// are summed in pair order, so results do not depend on it. Periodic faces: pairs meet through
+/// their minimum image as in findProbeContacts.
 ///
 /// Keys: kn k_n [N/m] (> 0), kt k_t [N/m] (default k_n), friction μ (default 0), restitution e
 /// (default 1: no dashpot), verletDistance V_d [m] (default 0.1 R_min, R_min the smallest
@@ -49,8 +50,8 @@ public:
 
     /// The neighbour list for `bodies` now (rebuilt if the rule says so): pairs i < j.
     const std::vector<std::array<int, 2>>& neighbours(const BodyList& bodies);
-    /// Pairs i < j whose inflated bounding circles overlap now, by brute force (the reference
-    /// the list must contain every touching pair of).
+    /// Pairs i < j whose inflated bounding circles overlap now, by brute force: the reference
+    /// neighbours() (binned, candidatePairs) must equal after a build.
     std::vector<std::array<int, 2>> allNear(const BodyList& bodies) const;
     /// Verlet distance V_d in use [m] (0 before the first call with bodies).
     double verletDistance() const { return vd_; }

@@ -291,6 +291,33 @@ TEST(SdemContactTest, VerletListGivesTheBruteForceForces) {
     EXPECT_NEAR(l->verletDistance(), 0.1 * 0.04, 1e-15); // 0.1 R_min by default
 }
 
+TEST(SdemContactTest, BinnedNeighbourListEqualsBruteForce) {
+    // 400 small squares and disks of several sizes scattered densely, two large fixed walls (the
+    // binning leaves them out and pairs them with everyone) and a fixed pair (never listed).
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Bodies b;
+    for (int k = 0; k < 400; ++k) {
+        const double x = 2.0 * u(rng), y = u(rng), s = 0.01 + 0.03 * u(rng);
+        const std::string shape =
+            k % 3 == 0 ? "{type: disk, radius: " + std::to_string(s) + "}" : square(s, 0.002, x, y);
+        b.push_back(body("{shape: " + shape + ", density: 1000, position: [" + std::to_string(x) +
+                             ", " + std::to_string(y) + "]}",
+                         "b" + std::to_string(k)));
+    }
+    b.push_back(
+        body("{shape: " + square(2.2, 0.01, 1.0, -0.6) + ", density: 1, motion: fixed}", "floor"));
+    b.push_back(
+        body("{shape: " + square(1.2, 0.01, -0.6, 0.5) + ", density: 1, motion: fixed}", "wall"));
+    auto l = sdem("kn: 1.0e5, verletDistance: 0.01");
+    const auto& binned = l->neighbours(b);
+    const auto brute = l->allNear(b);
+    EXPECT_GT(brute.size(), 400u); // a dense scene: many pairs
+    EXPECT_EQ(binned, brute);      // the same pairs in the same order
+    for (const auto& [i, j] : binned)
+        EXPECT_FALSE(b[i]->motion() == Motion::Fixed && b[j]->motion() == Motion::Fixed);
+}
+
 TEST(SdemContactTest, StableStepIsEq51) {
     Bodies b;
     b.push_back(
