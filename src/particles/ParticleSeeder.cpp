@@ -5,6 +5,7 @@
 #include "particles/Region.hpp"
 #include "particles/Seeding.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -149,6 +150,9 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
         } else {
             stressType = set.getWordOr("initialStress", "none", stressTypes);
         }
+        const bool outsideBodies = set.getBoolOr("outsideBodies", false);
+        if (outsideBodies && !bodyDistance_)
+            set.error("outsideBodies", "the scene has no rigid bodies (constant/rigidBodies)");
         geostatic = stressType == "geostatic";
         if (stressType == "gravityPreload") {
             if (gravity_.norm() == 0)
@@ -166,6 +170,17 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
             xs = seedPoissonDisk<dim>(*region, poissonDiskSpacing(grid_.h(), perCell, dim),
                                       static_cast<std::uint64_t>(rngSeed));
             if (!xs.empty()) volume = region->volume() / static_cast<double>(xs.size());
+        }
+        if (outsideBodies) { // clear of every body by half the point spacing
+            const double clearance = 0.5 * std::pow(volume, 1.0 / dim);
+            const std::size_t seeded = xs.size();
+            xs.erase(
+                std::remove_if(xs.begin(), xs.end(),
+                               [&](const Vec<dim>& x) { return bodyDistance_(x) < clearance; }),
+                xs.end());
+            if (xs.empty())
+                set.error("outsideBodies", "every one of the " + std::to_string(seeded) +
+                                               " points of the region lies in or next to a body");
         }
         if (xs.empty())
             set.error("region", "the region seeds no particles (is it smaller "

@@ -6,6 +6,7 @@
 #include "materials/Material.hpp"
 #include "particles/Particles.hpp"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct PreloadSettings {
 /// seeding), material, initial velocity (a vector, `{type: uniform, value}` or an axial mode
 /// `{type: axialMode, amplitude, direction, origin, length, mode}`) and initial stress (none,
 /// geostatic σ_v = −ρ|g|(z_s − z), σ_h = K0 σ_v, or a gravity preload run by the solver).
+/// `outsideBodies: yes` leaves out the points closer to a rigid body than half their spacing
+/// (fines seeded in the voids of a body skeleton; no point starts inside a body).
 template <int dim> class ParticleSeeder {
 public:
     ParticleSeeder(const Grid<dim>& grid,
@@ -36,12 +39,18 @@ public:
 
     /// The gravity preload a set asked for (requested = false if none).
     const PreloadSettings& preload() const { return preload_; }
+    /// The scene's rigid bodies for `outsideBodies: yes`: the signed distance from x to the
+    /// nearest body surface [m] (negative inside a body).
+    void setBodyDistance(std::function<double(const Vec<dim>&)> distance) {
+        bodyDistance_ = std::move(distance);
+    }
 
 private:
     const Grid<dim>& grid_;
     const std::vector<std::unique_ptr<Material<dim>>>& materials_;
     Vec<dim> gravity_;
     PreloadSettings preload_;
+    std::function<double(const Vec<dim>&)> bodyDistance_; ///< empty: no bodies
 };
 
 } // namespace mpm

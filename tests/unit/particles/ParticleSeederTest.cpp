@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Seeding around rigid bodies: `outsideBodies: yes` leaves out the points closer to a body than
+// half their spacing (fines in the voids of a skeleton), and asks for bodies.
+#include "particles/ParticleSeeder.hpp"
+#include "TestSupport.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mpm {
+namespace {
+
+Dictionary parse(const std::string& text, const std::string& file) {
+    return Dictionary::fromString(text, file);
+}
+
+struct Scene {
+    Grid<2> grid{parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.05\n", "constant/grid")};
+    std::vector<std::unique_ptr<Material<2>>> materials;
+    Scene() {
+        materials.push_back(Material<2>::create(
+            parse("type: linearElastic\ndensity: 2000\nE: 1e6\nnu: 0.3\n", "constant/materials"),
+            "sand"));
+    }
+    Particles<2> seed(const std::string& extra, bool withBody) {
+        Particles<2> p;
+        materials[0]->declareState(p);
+        ParticleSeeder<2> seeder(grid, materials, Vec<2>(0, -9.81));
+        if (withBody) // a disk of radius 0.2 at (0.5, 0.5)
+            seeder.setBodyDistance(
+                [](const Vec<2>& x) { return (x - Vec<2>(0.5, 0.5)).norm() - 0.2; });
+        seeder.seed(parse("fines:\n  material: sand\n  region: {type: box, min: [0.1, 0.1], max: "
+                          "[0.9, 0.9]}\n  seeding: {method: regular, perDirection: 2}\n" +
+                              extra,
+                          "constant/particles"),
+                    p);
+        return p;
+    }
+};
+
+TEST(ParticleSeeder, OutsideBodiesLeavesOutThePointsInAndNextToTheBodies) {
+    Scene s;
+    const Particles<2> all = s.seed("", true);
+    const Particles<2> fines = s.seed("  outsideBodies: yes\n", true);
+    const double clearance = 0.5 * 0.025; // half the spacing h/2
+    std::size_t near = 0;
+    for (const Vec<2>& x : all.x)
+        near += (x - Vec<2>(0.5, 0.5)).norm() - 0.2 < clearance;
+    EXPECT_GT(near, 0u);
+    EXPECT_EQ(fines.size(), all.size() - near);
+    for (const Vec<2>& x : fines.x)
+        EXPECT_GE((x - Vec<2>(0.5, 0.5)).norm() - 0.2, clearance);
+    EXPECT_EQ(s.seed("  outsideBodies: no\n", true).size(), all.size());
+}
+
+TEST(ParticleSeeder, OutsideBodiesWithoutBodiesIsAnInputError) {
+    Scene s;
+    const InputError e = test::catchInputError([&] { s.seed("  outsideBodies: yes\n", false); });
+    EXPECT_NE(std::string(e.what()).find("outsideBodies"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("no rigid bodies"), std::string::npos);
+}
+
+} // namespace
+} // namespace mpm
