@@ -6,6 +6,7 @@
 #include "rigid/LevelSetShape.hpp"
 #include "rigid/RigidBodyOutput.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -207,6 +208,15 @@ template <int dim> void BodySet<dim>::write(const std::filesystem::path& dir) co
 template <int dim> void BodySet<dim>::read(const Case& cs, const std::string& timeDir) {
     readRigidBodyState(cs.read(timeDir + "/uniform/rigidBodies"), bodies_);
     if (contact_) readHistory(cs.read(timeDir + "/uniform/bodyContacts"));
+}
+
+template <int dim> double BodySet<dim>::distance(const Vec<dim>& x) const {
+    double nearest = 1e300;
+    Vec<dim> normal;
+    for (const auto& b : bodies_)
+        nearest = std::min(
+            nearest, b->distance(lattice_ ? lattice_->imageNear(x, b->position()) : x, normal));
+    return nearest;
 }
 
 template <int dim> void BodySet<dim>::sumForces(const Comm& comm) {

@@ -72,6 +72,9 @@ public:
     /// `open(face, x)`: whether face `face` lets a body at x through.
     std::string check(const Grid<dim>& grid,
                       const std::function<bool(int, const Vec<dim>&)>& open) const;
+    /// Signed distance from x to the nearest body surface (through periodic faces: to each
+    /// body's image nearest x) [m], negative inside a body; 1e300 without bodies.
+    double distance(const Vec<dim>& x) const;
     /// Largest rim speed |v| + |ω| R of a moving body [m/s] (the CFL counts bodies too).
     double maxRimSpeed() const;
     /// True if a prescribed or driven body can do unbounded work on the material.

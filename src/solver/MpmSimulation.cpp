@@ -116,14 +116,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         gravity_ = acceleration_->at(time.startFrom() == "startTime" ? time.startTime() : 0.0);
         ParticleSeeder<dim> seeder(grid_, materials_, gravity_);
         if (!bodies_.empty())
-            seeder.setBodyDistance([this](const Vec<dim>& x) {
-                double nearest = 1e300;
-                Vec<dim> normal;
-                for (const auto& b : bodies_.bodies()) // the image nearest each body
-                    nearest = std::min(
-                        nearest, b->distance(bc_.lattice().imageNear(x, b->position()), normal));
-                return nearest;
-            });
+            seeder.setBodyDistance([this](const Vec<dim>& x) { return bodies_.distance(x); });
         seeder.seed(case_.read("constant/particles"), particles_);
         bc_.wrap(particles_);
         if (subdomain_) subdomain_->keepOwned(particles_);

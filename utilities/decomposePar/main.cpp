@@ -15,6 +15,7 @@
 #include "parallel/Decomposition.hpp"
 #include "particles/ParticleSeeder.hpp"
 #include "particles/Particles.hpp"
+#include "rigid/BodySet.hpp"
 #include "solver/Application.hpp"
 
 #include <algorithm>
@@ -68,6 +69,9 @@ std::vector<Vec<dim>> seedPoints(const Case& cs, const Grid<dim>& grid,
         m->declareState(particles);
     const double t0 = time.startFrom() == "startTime" ? time.startTime() : 0.0;
     ParticleSeeder<dim> seeder(grid, materials, acceleration->at(t0));
+    const BodySet<dim> bodies(cs, grid, &bc.lattice()); // for outsideBodies, as the solver
+    if (!bodies.empty())
+        seeder.setBodyDistance([&bodies](const Vec<dim>& x) { return bodies.distance(x); });
     seeder.seed(cs.read("constant/particles"), particles);
     bc.wrap(particles);
     return std::move(particles.x);
