@@ -61,7 +61,7 @@ int main(int argc, char* argv[]) {
         reportPeakMemory(log());
         log() << "\nEnd\n";
     });
-    // A rank that failed alone would leave the others waiting in a collective: stop them all.
-    if (rc != 0 && comm.size() > 1) comm.abort(rc);
-    return rc;
+    // A rank that failed alone would leave the others waiting in a collective: finish stops
+    // them all then; a failure every rank saw ends cleanly.
+    return comm.finish(rc);
 }

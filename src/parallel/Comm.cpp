@@ -175,6 +175,21 @@ void Comm::barrier() const {
     if (mpi_) MPI_Barrier(MPI_COMM_WORLD);
 }
 
+int Comm::finish(int code, double seconds) const {
+    if (!mpi_ || size_ == 1) return code;
+    MPI_Request request;
+    check(MPI_Ibarrier(MPI_COMM_WORLD, &request), "MPI_Ibarrier");
+    const double start = MPI_Wtime();
+    int done = 0;
+    while (!done) {
+        check(MPI_Test(&request, &done, MPI_STATUS_IGNORE), "MPI_Test");
+        if (!done && MPI_Wtime() - start > seconds) abort(code != 0 ? code : 1);
+    }
+    int worst = 0;
+    check(MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+    return worst;
+}
+
 void Comm::abort(int code) const {
     if (mpi_) MPI_Abort(MPI_COMM_WORLD, code);
     std::exit(code);

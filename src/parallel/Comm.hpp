@@ -72,6 +72,11 @@ public:
     void barrier() const;
     /// Stop every rank now (a failure seen by one rank only): MPI_Abort with `code`.
     [[noreturn]] void abort(int code) const;
+    /// The end of a run with exit code `code` on this rank: when every rank gets here within
+    /// `seconds` (a normal end, or a failure all ranks saw, as a bad input or a collective
+    /// check), the largest code of all; otherwise some rank failed alone while the others wait in
+    /// a collective, and every rank is stopped (abort) — never a hang.
+    int finish(int code, double seconds = 10.0) const;
 
 private:
     /// Equal-sized blocks of bytes of every rank, concatenated in rank order.
