@@ -332,13 +332,10 @@ template <int dim> void MpmSimulation<dim>::particleToGrid() {
     transfer_->scatter(particles_, grid_, sort_, order_->forceWithMomentum());
     if (coupling_) // coupling forces of dense points [000 Eq. 19–20]
         transfer_->scatterPointForces(coupling_->gridPoints(), coupling_->gridForces(), grid_);
-    if (subdomain_) {
-        auto comm = timer_(PhaseTimer::Comm);
-        if (order_->forceWithMomentum())
-            subdomain_->halo().sum(grid_.mass, grid_.momentum, grid_.force);
-        else
-            subdomain_->halo().sum(grid_.mass, grid_.momentum);
-    }
+    if (order_->forceWithMomentum())
+        sumGhosts(grid_.mass, grid_.momentum, grid_.force);
+    else
+        sumGhosts(grid_.mass, grid_.momentum);
     // Periodic faces: image nodes onto their owners; the force once all of it is scattered.
     foldPeriodic(order_->forceWithMomentum() ? FoldAll : FoldMassMomentum);
     if (!constraints_.empty()) markConstrainedNodes();
@@ -368,7 +365,7 @@ template <int dim> void MpmSimulation<dim>::markConstrainedNodes() {
             inMaterial_[p] = particles_.material[p] == m ? 1.0 : 0.0;
         grid_.forEachNode(grid_.activeBlocks(), [&](Index i) { reach_[k][i] = 0.0; });
         transfer_->scatterScalar(inMaterial_, reach_[k], sort_);
-        if (subdomain_) subdomain_->halo().sum(reach_[k]); // complete on the nodes updated here
+        sumGhosts(reach_[k]); // complete on the nodes updated here
     }
 }
 
@@ -392,10 +389,7 @@ template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
     });
     bc_.constrain(grid_, grid_.vOld, time_->value() - dt_);
     applyVelocityConstraints(grid_.vOld, time_->value() - dt_);
-    if (subdomain_) {
-        auto comm = timer_(PhaseTimer::Comm);
-        subdomain_->halo().copy(grid_.vOld);
-    }
+    copyToGhosts(grid_.vOld);
 }
 
 template <int dim> void MpmSimulation<dim>::velocityGradient() {
@@ -406,10 +400,7 @@ template <int dim> void MpmSimulation<dim>::velocityGradient() {
 template <int dim> void MpmSimulation<dim>::scatterInternalForce() {
     auto timer = timer_(PhaseTimer::P2G);
     transfer_->scatterForce(particles_, grid_, sort_);
-    if (subdomain_) {
-        auto comm = timer_(PhaseTimer::Comm);
-        subdomain_->halo().sum(grid_.force);
-    }
+    sumGhosts(grid_.force);
     foldPeriodic(FoldForce);
 }
 
@@ -420,10 +411,7 @@ template <int dim> void MpmSimulation<dim>::remapMomentum() {
         grid_.momentum[i].setZero();
     });
     transfer_->scatter(particles_, grid_, sort_, false);
-    if (subdomain_) {
-        auto comm = timer_(PhaseTimer::Comm);
-        subdomain_->halo().sum(grid_.mass, grid_.momentum);
-    }
+    sumGhosts(grid_.mass, grid_.momentum);
     foldPeriodic(FoldMassMomentum);
 }
 
@@ -448,11 +436,8 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     });
     bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
     applyVelocityConstraints(grid_.v, time_->value());
-    if (subdomain_) {
-        auto comm = timer_(PhaseTimer::Comm);
-        subdomain_->halo().copy(grid_.vOld, grid_.v);
-        comm_.sum(reactions_[0].data(), static_cast<int>(2 * dim * dim)); // contiguous Vecs
-    }
+    copyToGhosts(grid_.vOld, grid_.v);
+    if (subdomain_) comm_.sum(reactions_[0].data(), static_cast<int>(2 * dim * dim)); // all ranks
 }
 
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {

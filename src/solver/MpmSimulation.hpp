@@ -99,6 +99,18 @@ private:
     const std::vector<Index>& updateBlocks() const {
         return subdomain_ ? subdomain_->halo().owned() : grid_.activeBlocks();
     }
+    /// Parallel runs: the ghosts' partial sums of node `fields` onto their owners, and the
+    /// owners' values back to the ghosts (GridHalo); nothing in a serial run.
+    template <class... Fields> void sumGhosts(Fields&... fields) {
+        if (!subdomain_) return;
+        auto comm = timer_(PhaseTimer::Comm);
+        subdomain_->halo().sum(fields...);
+    }
+    template <class... Fields> void copyToGhosts(Fields&... fields) {
+        if (!subdomain_) return;
+        auto comm = timer_(PhaseTimer::Comm);
+        subdomain_->halo().copy(fields...);
+    }
     /// Collective failure check: stops every rank when `bad` holds on any (fail on each).
     void failIfAny(bool bad, const std::string& phase, Index particle, const std::string& what);
 
