@@ -153,6 +153,10 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
         const bool outsideBodies = set.getBoolOr("outsideBodies", false);
         if (outsideBodies && !bodyDistance_)
             set.error("outsideBodies", "the scene has no rigid bodies (constant/rigidBodies)");
+        if (set.has("bodyClearance") && !outsideBodies)
+            set.error("bodyClearance", "bodyClearance needs outsideBodies: yes");
+        const double clearanceGiven = set.getScalarOr("bodyClearance", -1.0, Bounds::positive());
+        const int minimumCluster = set.getIntOr("minimumCluster", 1, Bounds::closed(1, 1e9));
         geostatic = stressType == "geostatic";
         if (stressType == "gravityPreload") {
             if (gravity_.norm() == 0)
@@ -171,8 +175,9 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
                                       static_cast<std::uint64_t>(rngSeed));
             if (!xs.empty()) volume = region->volume() / static_cast<double>(xs.size());
         }
-        if (outsideBodies) { // clear of every body by half the point spacing
-            const double clearance = 0.5 * std::pow(volume, 1.0 / dim);
+        if (outsideBodies) { // clear of every body by c (default half the point spacing)
+            const double clearance =
+                clearanceGiven > 0 ? clearanceGiven : 0.5 * std::pow(volume, 1.0 / dim);
             const std::size_t seeded = xs.size();
             xs.erase(
                 std::remove_if(xs.begin(), xs.end(),
@@ -181,6 +186,15 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
             if (xs.empty())
                 set.error("outsideBodies", "every one of the " + std::to_string(seeded) +
                                                " points of the region lies in or next to a body");
+        }
+        if (minimumCluster > 1) { // neighbours: within 1.5 spacings (diagonals of a lattice)
+            const std::size_t seeded = xs.size();
+            dropSmallClusters(xs, 1.5 * std::pow(volume, 1.0 / dim),
+                              static_cast<std::size_t>(minimumCluster));
+            if (xs.empty() && seeded > 0)
+                set.error("minimumCluster", "every group of the " + std::to_string(seeded) +
+                                                " points is smaller than " +
+                                                std::to_string(minimumCluster));
         }
         if (xs.empty())
             set.error("region", "the region seeds no particles (is it smaller "

@@ -24,8 +24,9 @@ struct PreloadSettings {
 /// seeding), material, initial velocity (a vector, `{type: uniform, value}` or an axial mode
 /// `{type: axialMode, amplitude, direction, origin, length, mode}`) and initial stress (none,
 /// geostatic σ_v = −ρ|g|(z_s − z), σ_h = K0 σ_v, or a gravity preload run by the solver).
-/// `outsideBodies: yes` leaves out the points closer to a rigid body than half their spacing
-/// (fines seeded in the voids of a body skeleton; no point starts inside a body).
+/// `outsideBodies: yes` leaves out the points closer to a rigid body than `bodyClearance` [m]
+/// (default half their spacing): fines seeded in the voids of a body skeleton, no point
+/// starting inside a body; a larger clearance leaves a gap around every body.
 template <int dim> class ParticleSeeder {
 public:
     ParticleSeeder(const Grid<dim>& grid,

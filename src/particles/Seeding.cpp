@@ -2,7 +2,9 @@
 #include "particles/Seeding.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -220,9 +222,64 @@ double poissonDiskSpacing(double cellSize, int particlesPerCell, int dim) {
     return factor * cellSize / std::pow(static_cast<double>(particlesPerCell), 1.0 / dim);
 }
 
+template <int dim>
+std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::size_t minCount) {
+    if (!(link > 0.0)) throw std::invalid_argument("dropSmallClusters: link must be > 0");
+    const std::size_t n = points.size();
+    if (minCount <= 1 || n == 0) return 0;
+    // Union–find over the pairs closer than `link`, found through a hash of cells of size link.
+    std::vector<std::size_t> parent(n);
+    for (std::size_t i = 0; i < n; ++i)
+        parent[i] = i;
+    auto root = [&](std::size_t i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    using Key = std::array<std::int64_t, dim>;
+    auto cellOf = [&](const Vec<dim>& x) {
+        Key k;
+        for (int d = 0; d < dim; ++d)
+            k[d] = static_cast<std::int64_t>(std::floor(x[d] / link));
+        return k;
+    };
+    std::map<Key, std::vector<std::size_t>> cells;
+    for (std::size_t i = 0; i < n; ++i)
+        cells[cellOf(points[i])].push_back(i);
+    const double link2 = link * link;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Key c = cellOf(points[i]);
+        Key o;
+        o.fill(-1);
+        while (true) {
+            Key k;
+            for (int d = 0; d < dim; ++d)
+                k[d] = c[d] + o[d];
+            if (const auto it = cells.find(k); it != cells.end())
+                for (std::size_t j : it->second)
+                    if (j > i && (points[j] - points[i]).squaredNorm() <= link2)
+                        parent[root(j)] = root(i);
+            int d = 0;
+            while (d < dim && ++o[d] > 1)
+                o[d++] = -1;
+            if (d == dim) break;
+        }
+    }
+    std::vector<std::size_t> size(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        ++size[root(i)];
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (size[root(i)] >= minCount) points[kept++] = points[i];
+    points.resize(kept);
+    return n - kept;
+}
+
 template std::vector<Vec<2>> seedRegular<2>(const Region<2>&, const Vec<2>&, double, int);
 template std::vector<Vec<3>> seedRegular<3>(const Region<3>&, const Vec<3>&, double, int);
 template std::vector<Vec<2>> seedPoissonDisk<2>(const Region<2>&, double, std::uint64_t);
 template std::vector<Vec<3>> seedPoissonDisk<3>(const Region<3>&, double, std::uint64_t);
+template std::size_t dropSmallClusters<2>(std::vector<Vec<2>>&, double, std::size_t);
+template std::size_t dropSmallClusters<3>(std::vector<Vec<3>>&, double, std::size_t);
 
 } // namespace mpm

@@ -39,9 +39,18 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
 /// ppc < 1 is std::invalid_argument.
 double poissonDiskSpacing(double cellSize, int particlesPerCell, int dim);
 
+/// Leave out the groups of fewer than `minCount` points, a group being the points connected
+/// through neighbours at most `link` apart (single linkage): the specks a seeding leaves in
+/// narrow pockets. The order of the kept points is unchanged; returns how many were left out.
+/// link <= 0 is std::invalid_argument.
+template <int dim>
+std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::size_t minCount);
+
 extern template std::vector<Vec<2>> seedRegular<2>(const Region<2>&, const Vec<2>&, double, int);
 extern template std::vector<Vec<3>> seedRegular<3>(const Region<3>&, const Vec<3>&, double, int);
 extern template std::vector<Vec<2>> seedPoissonDisk<2>(const Region<2>&, double, std::uint64_t);
 extern template std::vector<Vec<3>> seedPoissonDisk<3>(const Region<3>&, double, std::uint64_t);
+extern template std::size_t dropSmallClusters<2>(std::vector<Vec<2>>&, double, std::size_t);
+extern template std::size_t dropSmallClusters<3>(std::vector<Vec<3>>&, double, std::size_t);
 
 } // namespace mpm

@@ -56,6 +56,71 @@ TEST(ParticleSeeder, OutsideBodiesLeavesOutThePointsInAndNextToTheBodies) {
     EXPECT_EQ(s.seed("  outsideBodies: no\n", true).size(), all.size());
 }
 
+TEST(ParticleSeeder, BodyClearanceSetsTheGapLeftAroundTheBodies) {
+    Scene s;
+    const Particles<2> all = s.seed("", true);
+    for (double c : {0.01, 0.05, 0.1}) {
+        const Particles<2> fines =
+            s.seed("  outsideBodies: yes\n  bodyClearance: " + std::to_string(c) + "\n", true);
+        std::size_t clear = 0;
+        for (const Vec<2>& x : all.x)
+            clear += (x - Vec<2>(0.5, 0.5)).norm() - 0.2 >= c;
+        EXPECT_EQ(fines.size(), clear) << "c = " << c;
+        for (const Vec<2>& x : fines.x)
+            EXPECT_GE((x - Vec<2>(0.5, 0.5)).norm() - 0.2, c);
+    }
+}
+
+TEST(ParticleSeeder, BodyClearanceWithoutOutsideBodiesOrNotPositiveIsAnInputError) {
+    Scene s;
+    InputError e = test::catchInputError([&] { s.seed("  bodyClearance: 0.01\n", true); });
+    EXPECT_NE(std::string(e.what()).find("needs outsideBodies: yes"), std::string::npos);
+    e = test::catchInputError([&] { s.seed("  outsideBodies: yes\n  bodyClearance: 0\n", true); });
+    EXPECT_NE(std::string(e.what()).find("bodyClearance"), std::string::npos);
+}
+
+TEST(ParticleSeeder, MinimumClusterLeavesOutTheSpecksInClosedPockets) {
+    // A ring body (|r − 0.25| < 0.05 about the centre) splits the points into the disk inside it
+    // (r < 0.2 − c) and the rest (r > 0.3 + c); minimumCluster between the two counts drops the
+    // inner disk only.
+    Scene s;
+    const Vec<2> o(0.5, 0.5);
+    auto ring = [o](const Vec<2>& x) { return std::abs((x - o).norm() - 0.25) - 0.05; };
+    const std::string fill = "  outsideBodies: yes\n";
+    Particles<2> p;
+    std::size_t inner = 0, outer = 0;
+    {
+        Particles<2> all = s.seed("", false);
+        for (const Vec<2>& x : all.x) {
+            if (ring(x) < 0.0125) continue; // within the default clearance (half the spacing)
+            ((x - o).norm() < 0.25 ? inner : outer)++;
+        }
+    }
+    ASSERT_GT(inner, 10u);
+    ASSERT_GT(outer, inner);
+    auto seed = [&](const std::string& extra) {
+        Particles<2> q;
+        s.materials[0]->declareState(q);
+        ParticleSeeder<2> seeder(s.grid, s.materials, Vec<2>(0, -9.81));
+        seeder.setBodyDistance(ring);
+        seeder.seed(parse("fines:\n  material: sand\n  region: {type: box, min: [0.1, 0.1], "
+                          "max: [0.9, 0.9]}\n" +
+                              fill + extra,
+                          "constant/particles"),
+                    q);
+        return q;
+    };
+    EXPECT_EQ(seed("").size(), inner + outer);
+    EXPECT_EQ(seed("  minimumCluster: " + std::to_string(inner) + "\n").size(), inner + outer);
+    const Particles<2> kept = seed("  minimumCluster: " + std::to_string(inner + 1) + "\n");
+    EXPECT_EQ(kept.size(), outer);
+    for (const Vec<2>& x : kept.x)
+        EXPECT_GT((x - o).norm(), 0.3);
+    const InputError e = test::catchInputError(
+        [&] { seed("  minimumCluster: " + std::to_string(inner + outer + 1) + "\n"); });
+    EXPECT_NE(std::string(e.what()).find("minimumCluster"), std::string::npos);
+}
+
 TEST(ParticleSeeder, OutsideBodiesWithoutBodiesIsAnInputError) {
     Scene s;
     const InputError e = test::catchInputError([&] { s.seed("  outsideBodies: yes\n", false); });

@@ -25,6 +25,36 @@ template <int dim> double minPairDistance(const std::vector<Vec<dim>>& p) {
     return std::sqrt(m2);
 }
 
+TEST(SeedingTest, DropSmallClustersKeepsTheGroupsOfAtLeastMinCountInOrder) {
+    // A 3 x 3 lattice (spacing 1), a pair 1 apart and a lone point, far from each other.
+    std::vector<Vec<2>> p;
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+            p.emplace_back(i, j);
+    p.insert(p.begin() + 4, Vec<2>(10, 0)); // the lone point, amid the lattice's order
+    p.emplace_back(20, 0);
+    p.emplace_back(20, 1);
+    const std::vector<Vec<2>> all = p;
+    EXPECT_EQ(dropSmallClusters(p, 1.5, 1), 0u);
+    EXPECT_EQ(p, all);
+    EXPECT_EQ(dropSmallClusters(p, 1.5, 2), 1u); // the lone point
+    EXPECT_EQ(p.size(), 11u);
+    EXPECT_EQ(dropSmallClusters(p, 1.5, 3), 2u); // the pair
+    ASSERT_EQ(p.size(), 9u);
+    for (int k = 0; k < 9; ++k)
+        EXPECT_EQ(p[k], Vec<2>(k % 3, k / 3)) << k; // the lattice, in its order
+    // A link shorter than the spacing leaves every point alone.
+    EXPECT_EQ(dropSmallClusters(p, 0.9, 2), 9u);
+    EXPECT_TRUE(p.empty());
+    EXPECT_THROW(dropSmallClusters(p, 0.0, 2), std::invalid_argument);
+}
+
+TEST(SeedingTest, DropSmallClustersLinksDiagonalsIn3D) {
+    std::vector<Vec<3>> p{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {5, 5, 5}};
+    EXPECT_EQ(dropSmallClusters(p, std::sqrt(3.0) * 1.0001, 3), 1u);
+    EXPECT_EQ(p.size(), 3u);
+}
+
 TEST(SeedingTest, RegularBoxAlignedToGrid2D) {
     const auto box = makeRegion<2>("type: box\nmin: [0.2, -0.3]\nmax: [1.2, 0.5]\n");
     const double h = 0.1;
