@@ -4,40 +4,65 @@
 
 #include <algorithm>
 #include <limits>
+#include <omp.h>
 #include <stdexcept>
 
 namespace mpm {
 
 template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
-    constexpr int Bits = 11;
-    constexpr std::uint32_t Buckets = 1u << Bits;
+    // Passes of at most 16 bits (a count array of ≤ 65 536 entries a thread, in L2): one pass
+    // up to 65 536 blocks, two up to 2³², each a stable counting sort.
+    int bits = 1;
+    while ((Index(1) << bits) < numBlocks)
+        ++bits;
+    const int passes = (bits + 15) / 16;
+    const int digitBits = (bits + passes - 1) / passes;
+    const std::uint32_t buckets = 1u << digitBits;
     const Index n = static_cast<Index>(block_.size());
-    int passes = 1;
-    while ((Index(1) << (Bits * passes)) < numBlocks)
-        ++passes;
     order_.resize(n);
     orderTmp_.resize(n);
     key_.resize(n);
     keyTmp_.resize(n);
-    for (Index i = 0; i < n; ++i) {
-        order_[i] = i;
-        key_[i] = static_cast<std::uint32_t>(block_[i]);
-    }
-    std::vector<Index> count(Buckets + 1);
-    for (int pass = 0; pass < passes; ++pass) {
-        const int shift = Bits * pass;
-        std::fill(count.begin(), count.end(), 0);
-        for (Index j = 0; j < n; ++j)
-            ++count[((key_[j] >> shift) & (Buckets - 1)) + 1];
-        for (std::uint32_t d = 0; d < Buckets; ++d)
-            count[d + 1] += count[d];
-        for (Index j = 0; j < n; ++j) {
-            const Index to = count[(key_[j] >> shift) & (Buckets - 1)]++;
-            orderTmp_[to] = order_[j];
-            keyTmp_[to] = key_[j];
+    const bool threads = worthThreads(n);
+    counts_.assign(static_cast<std::size_t>(omp_get_max_threads()) * buckets, 0);
+#pragma omp parallel if (threads)
+    {
+        const int team = omp_get_num_threads(), t = omp_get_thread_num();
+        const Index lo = n * t / team, hi = n * (t + 1) / team; // this thread's slice
+        Index* count = counts_.data() + static_cast<std::size_t>(t) * buckets;
+        for (Index i = lo; i < hi; ++i) {
+            order_[i] = i;
+            key_[i] = static_cast<std::uint32_t>(block_[i]);
         }
-        order_.swap(orderTmp_);
-        key_.swap(keyTmp_);
+        for (int pass = 0; pass < passes; ++pass) {
+            const int shift = digitBits * pass;
+            std::fill(count, count + buckets, 0);
+            for (Index j = lo; j < hi; ++j)
+                ++count[(key_[j] >> shift) & (buckets - 1)];
+#pragma omp barrier
+#pragma omp single
+            { // exclusive prefix in (digit, slice) order: the sort is stable for any team
+                Index sum = 0;
+                for (std::uint32_t d = 0; d < buckets; ++d)
+                    for (int u = 0; u < team; ++u) {
+                        Index& c = counts_[static_cast<std::size_t>(u) * buckets + d];
+                        const Index k = c;
+                        c = sum;
+                        sum += k;
+                    }
+            }
+            for (Index j = lo; j < hi; ++j) {
+                const Index to = count[(key_[j] >> shift) & (buckets - 1)]++;
+                orderTmp_[to] = order_[j];
+                keyTmp_[to] = key_[j];
+            }
+#pragma omp barrier
+#pragma omp single
+            {
+                order_.swap(orderTmp_);
+                key_.swap(keyTmp_);
+            }
+        }
     }
 }
 

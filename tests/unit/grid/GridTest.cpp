@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <omp.h>
 #include <random>
 #include <set>
 #include <string>
@@ -385,6 +386,27 @@ TEST(BlockSort, ReusedSortEqualsAFreshOneAndCountingSort) {
         pos = r.end;
     }
     EXPECT_EQ(pos, static_cast<Index>(b.size()));
+}
+
+TEST(BlockSort, SortIsTheStableCountingSortForAnyThreadCount) {
+    // 262 144 blocks: two radix passes; 20 000 particles: the slices of a thread team.
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\ncellSize: 0.00390625\n"));
+    ASSERT_GT(g.numBlocks(), 65536);
+    const Particles<3> p = randomParticles(g, 20000, 8);
+    std::vector<std::vector<Index>> byBlock(g.numBlocks());
+    for (Index i = 0; i < static_cast<Index>(p.size()); ++i)
+        byBlock[g.blockOf((p.x[i] - g.origin()) * g.invH())].push_back(i);
+    std::vector<Index> expected;
+    for (const auto& b : byBlock)
+        expected.insert(expected.end(), b.begin(), b.end());
+    const int threads = omp_get_max_threads();
+    for (int t : {1, 2, 3}) {
+        omp_set_num_threads(t);
+        BlockSort<3> sort;
+        ASSERT_EQ(sort.update(p, g), -1);
+        EXPECT_EQ(sort.order(), expected) << t << " threads";
+    }
+    omp_set_num_threads(threads);
 }
 
 TEST(BlockSort, ReportsFirstParticleOutsideArrays) {
