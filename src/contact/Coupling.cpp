@@ -143,7 +143,8 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
             body.addForce(-forces_[k],
                           law.contactPoint(imageOf(images, p.x[i], body), contacts_[k]));
             const int m = p.material[i];
-            const bool gasified = p.mass[i] < criticalDensity[m] * p.volume[i];
+            const bool gasified =
+                !law.gasifiedOnGrid() && p.mass[i] < criticalDensity[m] * p.volume[i];
             (gasified ? localPoints_ : gridPoints_).push_back(i);
             (gasified ? localForces_ : gridForces_).push_back(forces_[k]);
         }

@@ -87,6 +87,10 @@ Index hypoelasticReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& id
         Mat3 sig; // built in registers, stored once (the check does not re-read the store)
         if (p.mass[i] / p.volume[i] < rhoC) {
             sig.setZero(); // gasified
+            // A gas point keeps its volume only: F ← J^(1/dim) I, the same det F. Its F would
+            // otherwise shear without bound (entries of 10⁹ at J ≈ 100, where det F rounds to
+            // ≤ 0: tutorials/spheropolygon/granularMatrix at h = 2.5 mm).
+            p.F[i] = std::pow(p.volume[i] / p.volume0[i], 1.0 / dim) * Mat<dim>::Identity();
         } else if (fs <= 0.0 && u <= 0.0) {
             sig = trial;
         } else if (fs > 0.0 && G * u - Kbeta * v < 0.0) {

@@ -172,6 +172,52 @@ levelset::LevelSet torusLevelSet(double ring, double tube, double h) {
     return ls;
 }
 
+TEST(Coupling, GasifiedPointsTakeTheirForceLocallyOrThroughTheGrid) {
+    // Every point gasified (ρ = 1000 < ρ_c = 2000): with `gasifiedPoints: local` (default,
+    // [000 Eq. 20]) no force goes to the grid and each point's velocity gets Δt f/m; with
+    // `grid` the same forces go to the grid and the velocities are left alone.
+    const Grid<2> grid = unitGrid<2>();
+    for (const std::string& mode : {std::string(), std::string(", gasifiedPoints: local"),
+                                    std::string(", gasifiedPoints: grid")}) {
+        SCOPED_TRACE(mode);
+        std::vector<std::unique_ptr<RigidBody<2>>> bodies;
+        bodies.push_back(std::make_unique<RigidBody<2>>(
+            Dictionary::fromString("shape: {type: disk, radius: 0.17}\ndensity: 1\n"
+                                   "position: [0.52, 0.47]\n",
+                                   "test"),
+            "body"));
+        Particles<2> p = randomCloud<2>(grid, *bodies[0], 2000, 3, nullptr);
+        std::vector<std::unique_ptr<CouplingLaw<2>>> laws;
+        laws.push_back(CouplingLaw<2>::create(
+            Dictionary::fromString("{type: linearSpring, stiffness: 1" + mode + "}", "test"), H));
+        Coupling<2> coupling(std::move(laws), nullptr);
+        coupling.setParticles(p);
+        BlockSort<2> sort;
+        ASSERT_EQ(sort.update(p, grid), -1);
+        coupling.declareState(p, bodies);
+        bodies[0]->clearForces();
+        coupling.computeForces(p, bodies, {340.0}, {2000.0}, sort, grid, 1e-4);
+        ASSERT_GT(coupling.numContacts(), 50);
+        const std::vector<Vec<2>> v0 = p.v;
+        coupling.applyLocalForces(p, 1e-4);
+        Index moved = 0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            moved += p.v[i] != v0[i];
+        if (mode.find("grid") != std::string::npos) {
+            EXPECT_EQ(static_cast<Index>(coupling.gridPoints().size()), coupling.numContacts());
+            EXPECT_EQ(moved, 0);
+        } else {
+            EXPECT_TRUE(coupling.gridPoints().empty());
+            EXPECT_EQ(moved, coupling.numContacts());
+        }
+    }
+    const InputError e = test::catchInputError([] {
+        CouplingLaw<2>::create(
+            Dictionary::fromString("{type: barrier, gasifiedPoints: points}", "test"), H);
+    });
+    EXPECT_NE(std::string(e.what()).find("gasifiedPoints"), std::string::npos);
+}
+
 TEST(CouplingBroadPhase, SphereMatchesBruteForce2D) {
     expectBruteForce<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\nposition: [0.52, 0.47]\n",
                         20000, 1);

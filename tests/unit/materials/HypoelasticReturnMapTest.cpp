@@ -449,15 +449,20 @@ TEST(HypoelasticDruckerPrager, GasifiedPointsCarryNoStress) {
         p.stress[i] = randomStress<3>(rng, -1e4, 5e2 * i); // elastic
         p.volume[i] = i < 3 ? 1.01e-3 : 0.99e-3;           // ρ < ρ₀ = ρ_c for i < 3
         p.plasticStrain[i] = 0.5;
+        p.F[i] << 1.0, 3.0e4, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.01; // sheared: det F = 1.01
     }
     const Particles<3> before = p;
     ASSERT_EQ(create<3>()->updateStress(p, allIds(6), 1e-4), -1);
     for (int i = 0; i < 6; ++i) {
         SCOPED_TRACE(i);
-        if (i < 3)
+        if (i < 3) {
             EXPECT_EQ(p.stress[i], Mat3::Zero());
-        else
+            // A gas point keeps its volume only: F isotropic with J = V/V⁰.
+            EXPECT_LT((p.F[i] - std::cbrt(1.01) * Mat<3>::Identity()).norm(), 1e-15);
+        } else {
             EXPECT_EQ(p.stress[i], before.stress[i]);
+            EXPECT_EQ(p.F[i], before.F[i]);
+        }
         EXPECT_EQ(p.plasticStrain[i], 0.5);
     }
     Particles<3> r = before;
