@@ -66,6 +66,34 @@ Particles<dim> randomCloud(const Grid<dim>& g, const RigidBody<dim>& body, int n
     return p;
 }
 
+/// The bodies of a test: one, from its YAML.
+template <int dim>
+std::vector<std::unique_ptr<RigidBody<dim>>> oneBody(const std::string& yaml,
+                                                     const std::string& name = "body") {
+    std::vector<std::unique_ptr<RigidBody<dim>>> bodies;
+    bodies.push_back(std::make_unique<RigidBody<dim>>(Dictionary::fromString(yaml, "test"), name));
+    return bodies;
+}
+
+/// One coupling step of `bodies` with the law `lawYaml` on the points p (material 0 with
+/// trans-phase density rhoC): the coupling after computeForces.
+template <int dim>
+std::unique_ptr<Coupling<dim>> coupleOnce(const std::string& lawYaml, Particles<dim>& p,
+                                          std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
+                                          const Grid<dim>& grid, const PeriodicLattice<dim>* images,
+                                          double rhoC = 0.0) {
+    std::vector<std::unique_ptr<CouplingLaw<dim>>> laws;
+    laws.push_back(CouplingLaw<dim>::create(Dictionary::fromString(lawYaml, "test"), H));
+    auto coupling = std::make_unique<Coupling<dim>>(std::move(laws), images);
+    coupling->setParticles(p);
+    BlockSort<dim> sort;
+    EXPECT_EQ(sort.update(p, grid), -1);
+    coupling->declareState(p, bodies);
+    bodies[0]->clearForces();
+    coupling->computeForces(p, bodies, {340.0}, {rhoC}, sort, grid, 1e-4);
+    return coupling;
+}
+
 /// Torque of force f at lever arm r (2D: component 2).
 template <int dim> Vec3 torqueOf(const Vec<dim>& r, const Vec<dim>& f) {
     if constexpr (dim == 2)
@@ -85,9 +113,7 @@ void expectBruteForce(const std::string& bodyYaml, int n, std::uint64_t seed,
     const Grid<dim> grid = unitGrid<dim>();
     const PeriodicLattice<dim> lattice(grid, periodic);
     const PeriodicLattice<dim>* images = lattice.any() ? &lattice : nullptr;
-    std::vector<std::unique_ptr<RigidBody<dim>>> bodies;
-    bodies.push_back(
-        std::make_unique<RigidBody<dim>>(Dictionary::fromString(bodyYaml, "test"), "body"));
+    auto bodies = oneBody<dim>(bodyYaml);
     const RigidBody<dim>& body = *bodies[0];
     Particles<dim> p = randomCloud(grid, body, n, seed, images);
 
@@ -180,23 +206,12 @@ TEST(Coupling, GasifiedPointsTakeTheirForceLocallyOrThroughTheGrid) {
     for (const std::string& mode : {std::string(), std::string(", gasifiedPoints: local"),
                                     std::string(", gasifiedPoints: grid")}) {
         SCOPED_TRACE(mode);
-        std::vector<std::unique_ptr<RigidBody<2>>> bodies;
-        bodies.push_back(std::make_unique<RigidBody<2>>(
-            Dictionary::fromString("shape: {type: disk, radius: 0.17}\ndensity: 1\n"
-                                   "position: [0.52, 0.47]\n",
-                                   "test"),
-            "body"));
+        auto bodies = oneBody<2>("shape: {type: disk, radius: 0.17}\ndensity: 1\n"
+                                 "position: [0.52, 0.47]\n");
         Particles<2> p = randomCloud<2>(grid, *bodies[0], 2000, 3, nullptr);
-        std::vector<std::unique_ptr<CouplingLaw<2>>> laws;
-        laws.push_back(CouplingLaw<2>::create(
-            Dictionary::fromString("{type: linearSpring, stiffness: 1" + mode + "}", "test"), H));
-        Coupling<2> coupling(std::move(laws), nullptr);
-        coupling.setParticles(p);
-        BlockSort<2> sort;
-        ASSERT_EQ(sort.update(p, grid), -1);
-        coupling.declareState(p, bodies);
-        bodies[0]->clearForces();
-        coupling.computeForces(p, bodies, {340.0}, {2000.0}, sort, grid, 1e-4);
+        const auto c = coupleOnce<2>("{type: linearSpring, stiffness: 1" + mode + "}", p, bodies,
+                                     grid, nullptr, 2000.0);
+        const Coupling<2>& coupling = *c;
         ASSERT_GT(coupling.numContacts(), 50);
         const std::vector<Vec<2>> v0 = p.v;
         coupling.applyLocalForces(p, 1e-4);
@@ -316,19 +331,11 @@ TEST(CouplingBroadPhase, PeriodicHalfPeriodShiftGivesTheSameForces) {
         for (std::size_t i = 0; i < p.size(); ++i)
             p.x[i] = lattice.wrapPosition(p.x[i] + Vec<2>(shift, 0));
         bodies[0]->movePositionTo(bodies[0]->position() + Vec<2>(shift, 0));
-        std::vector<std::unique_ptr<CouplingLaw<2>>> laws;
-        laws.push_back(CouplingLaw<2>::create(
-            Dictionary::fromString("{type: barrier, friction: 0.3}", "test"), H));
-        Coupling<2> coupling(std::move(laws), &lattice);
-        coupling.setParticles(p);
-        BlockSort<2> sort;
-        EXPECT_EQ(sort.update(p, grid), -1);
-        coupling.declareState(p, bodies);
-        bodies[0]->clearForces();
-        coupling.computeForces(p, bodies, {340.0}, {0.0}, sort, grid, 1e-4);
+        const auto coupling =
+            coupleOnce<2>("{type: barrier, friction: 0.3}", p, bodies, grid, &lattice);
         force = bodies[0]->force();
         torque = bodies[0]->torque();
-        contacts = coupling.numContacts();
+        contacts = coupling->numContacts();
     };
     Vec<2> f0, f1;
     Vec3 t0, t1;
@@ -344,12 +351,9 @@ TEST(CouplingBroadPhase, PeriodicHalfPeriodShiftGivesTheSameForces) {
 TEST(CouplingBroadPhase, PeriodicMovingBodyLargerThanHalfThePeriodIsAnError) {
     const Grid<2> grid = unitGrid<2>();
     const PeriodicLattice<2> lattice(grid, {true, false});
-    std::vector<std::unique_ptr<RigidBody<2>>> bodies;
-    bodies.push_back(std::make_unique<RigidBody<2>>(
-        Dictionary::fromString("shape: {type: disk, radius: 0.49}\ndensity: 1\n"
-                               "position: [0.5, 0.5]\n",
-                               "test"),
-        "big"));
+    auto bodies = oneBody<2>("shape: {type: disk, radius: 0.49}\ndensity: 1\n"
+                             "position: [0.5, 0.5]\n",
+                             "big");
     Particles<2> p = randomCloud(grid, *bodies[0], 200, 3);
     std::vector<std::unique_ptr<CouplingLaw<2>>> laws;
     laws.push_back(CouplingLaw<2>::create(Dictionary::fromString("{type: barrier}", "test"), H));
