@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/BlockSort.hpp"
+#include "core/Neighbourhood.hpp"
 #include "core/Parallel.hpp"
 
 #include <algorithm>
@@ -123,8 +124,7 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
             colour |= (c[d] & 1) << d;
         colourBlocks_[colour].push_back(b);
         // Mark the 3^dim neighbourhood.
-        IVec<dim> o = IVec<dim>::Constant(-1);
-        while (true) {
+        forEachNeighbourOffset<dim>([&](const IVec<dim>& o) {
             bool inside = true;
             Index k = 0;
             for (int d = dim - 1; d >= 0; --d) {
@@ -136,11 +136,7 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
                 active_[k] = 1;
                 activeNodeBlocks_.push_back(k);
             }
-            int d = 0;
-            while (d < dim && ++o[d] > 1)
-                o[d++] = -1;
-            if (d == dim) break;
-        }
+        });
     }
     std::sort(activeNodeBlocks_.begin(), activeNodeBlocks_.end());
     return -1;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/Seeding.hpp"
+#include "core/Neighbourhood.hpp"
 
 #include <algorithm>
 #include <array>
@@ -249,9 +250,7 @@ std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::s
     const double link2 = link * link;
     for (std::size_t i = 0; i < n; ++i) {
         const Key c = cellOf(points[i]);
-        Key o;
-        o.fill(-1);
-        while (true) {
+        forEachNeighbourOffset<dim>([&](const IVec<dim>& o) {
             Key k;
             for (int d = 0; d < dim; ++d)
                 k[d] = c[d] + o[d];
@@ -259,11 +258,7 @@ std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::s
                 for (std::size_t j : it->second)
                     if (j > i && (points[j] - points[i]).squaredNorm() <= link2)
                         parent[root(j)] = root(i);
-            int d = 0;
-            while (d < dim && ++o[d] > 1)
-                o[d++] = -1;
-            if (d == dim) break;
-        }
+        });
     }
     std::vector<std::size_t> size(n, 0);
     for (std::size_t i = 0; i < n; ++i)

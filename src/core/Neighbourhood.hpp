@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/Types.hpp"
+
+namespace mpm {
+
+/// Visit the 3^dim offsets o ∈ {−1, 0, 1}^dim of a cell's neighbourhood (itself included), the
+/// first axis fastest: fn(o).
+template <int dim, class Fn> void forEachNeighbourOffset(Fn&& fn) {
+    IVec<dim> o = IVec<dim>::Constant(-1);
+    while (true) {
+        fn(static_cast<const IVec<dim>&>(o));
+        int d = 0;
+        while (d < dim && ++o[d] > 1)
+            o[d++] = -1;
+        if (d == dim) return;
+    }
+}
+
+} // namespace mpm
