@@ -122,11 +122,13 @@ Index ViscoelasticMuI<dim>::updateStress(Particles<dim>& p, const std::vector<In
         const Mat3 W = 0.5 * (L - L.transpose());
         const double trD = D.trace();
         const Mat3 Ddev = D - (trD / 3.0) * Mat3::Identity();
-        // 1. Rotationally neutralised elastic trial [Eq. 52].
-        const Mat3 Q = rotationOf(dt * W), Qh = rotationOf(0.5 * dt * W);
-        const Mat3 dE = Qh * (dt * D) * Qh.transpose();
+        // 1. Objective elastic trial [Eq. 52]: σᵉ rotated by Q = exp(Δt W), the increment
+        //    ℂ : Δt D taken at the end of the step (not half-rotated, Q½ Δt D Q½ᵀ): the return
+        //    is implicit, and in fast flow the stress must align with the rate it returns to
+        //    (docs/viscoelastic.md §1, "why the increment is not rotated").
+        const Mat3 Q = rotationOf(dt * W);
         const Mat3 eTrial =
-            Q * sigmaE[i] * Q.transpose() + lambda * dE.trace() * Mat3::Identity() + 2.0 * G * dE;
+            Q * sigmaE[i] * Q.transpose() + dt * (lambda * trD * Mat3::Identity() + 2.0 * G * D);
         // 2. Viscoelastic trial [Eq. 51].
         const Mat3 trial = eTrial + theta * trD * Mat3::Identity() + 2.0 * eta * Ddev;
         const double pTr = -trial.trace() / 3.0;
