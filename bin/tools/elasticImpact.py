@@ -1,32 +1,36 @@
 #!/usr/bin/env python3
-"""An elastic disk meeting a rigid body: an independent finite-element reference (numpy only).
+"""An elastic body meeting a rigid one: an independent finite-element reference (numpy only).
 
-The spheropolygon tutorials diskCollision and diskDrop [001 §5.1] ask how much of the impact's
-kinetic energy an elastic disk gives back. An ideal exchange gives back all of it; a real elastic
-disk keeps part as vibration (Gerl and Zippelius, Phys. Rev. E 59, 2361, 1999: collisions of
-elastic disks are inelastic at any finite v/c). This solves the same continuum problem without
-MPM, so that the tutorials can compare with a known answer:
+The spheropolygon tutorials diskCollision, diskDrop and rodImpact [001 §5.1, §5.4] ask how much
+of an impact's kinetic energy an elastic body gives back. An ideal exchange gives back all of
+it; a real elastic body keeps part as vibration (Gerl and Zippelius, Phys. Rev. E 59, 2361,
+1999: collisions of elastic disks are inelastic at any finite v/c). This solves the same
+continuum problems without MPM, so that the tutorials can compare with a known answer:
 
 - plane strain, the solver's `linearElastic` law (hypoelastic, Jaumann rate of the Cauchy
   stress, forward Euler as src/materials/HypoelasticLaw.hpp) or a compressible neo-Hookean
   (`--law neoHookean`; both are linear elasticity at small strain; St Venant–Kirchhoff is not
-  offered: it collapsed under the soft disk's contact), linear triangles on a concentric mesh of the disk (ring k has 6k
-  nodes, ring spacing R/n), lumped mass, central differences (velocity Verlet);
-- frictionless penalty contact on the rim nodes, force k_c ℓ_i d_i along the normal (ℓ_i the
-  node's share of the rim, d_i its penetration), k_c = κ (λ + 2μ)/h_m: κ large is a rigid
-  contact (κ = 100 penetrates ~1 % of an element's deformation; κ = 30 / 100 / 300 are
-  compared in the docs);
-- `collision`: a free rigid disk of the same radius and mass at rest, hit head-on at v₀;
-  result v_B/v₀ once they have separated (the ideal exchange: 1);
-- `drop`: a fixed flat floor, the disk arriving at v₀ under gravity g; result the rebound
-  energy E_r = ½ M v² + M g (y − y_c) of the centre of mass after separation (y_c its height
-  at first contact) over ½ M v₀² (the ideal bounce: 1), as diskDrop/validate measures it.
+  offered: it collapsed under the soft disk's contact), linear triangles, lumped masses,
+  central differences (velocity Verlet);
+- frictionless penalty contact on the boundary nodes, force k_c ℓ_i d_i along the normal (ℓ_i
+  the node's share of the boundary, d_i its penetration), k_c = κ (λ + 2μ)/h: κ large is a
+  rigid contact (κ = 100 penetrates ~1 % of an element's deformation; κ = 30 / 300 change the
+  answers by ≤ 0.007, the tutorials' READMEs);
+- `collision` (diskCollision): the disk R = 2 cm at v₀ = 2 m/s hits a free rigid disk of the
+  same radius and mass at rest head-on; result v_B/v₀ after they separate (ideal: 1);
+- `drop` (diskDrop): the disk arrives at v₀ on a fixed flat floor under g = 1000 m/s²; result
+  the rebound energy E_r = ½ M v² + M g (y − y_c) of the centre of mass after separation (y_c
+  its height at first contact) over ½ M v₀² (ideal: 1), as diskDrop/validate measures it;
+- `rod` (rodImpact): the rod 100 mm × 4 mm at v₀ hits a free rigid capsule (core 4 mm, radius
+  2 mm, the rod's mass) on its axis; result v_B/v₀ (1D wave theory: 1 − e⁻² = 0.865).
 
-    elasticDisk.py collision|drop [--material soft|hard] [--h 0.5e-3] [--kappa 100]
-    import elasticDisk; r = elasticDisk.run("collision", "hard", h=0.5e-3)
+    elasticImpact.py collision|drop|rod [--material soft|hard] [--h 0.5e-3] [--kappa 100]
+    import elasticImpact; r = elasticImpact.run("collision", "hard", h=0.5e-3)
 
 Prints and returns the result, the contact time and the energy drift (KE + strain + penalty
-[+ gravity], relative to the impact energy) as a check of the integration.
+[+ gravity], relative to the impact energy): a check of the integration for the hyperelastic
+law; with the hypoelastic one the strain energy is the complementary energy the solver reports,
+not a conserved potential.
 """
 import argparse
 import math
@@ -34,16 +38,18 @@ import sys
 
 import numpy as np
 
-RADIUS = 0.02  # m, [001 Table 1] read as cm (diskCollision README)
+RADIUS = 0.02  # m, the disk of [001 Table 1] read as cm (diskCollision README)
+ROD = (0.1, 0.004)  # m, length and thickness of the rodImpact rod
+CAPSULE = (0.004, 0.002)  # m, core length and radius of its rigid rod
 DENSITY = 2000.0  # kg/m³
-SPEED = 2.0  # m/s, the impact speed of both tutorials
+SPEED = 2.0  # m/s, the impact speed of all three tutorials
 GRAVITY = 1000.0  # m/s², diskDrop (the paper's 10 cm/s² with time scaled by 1/100)
 MATERIALS = {"soft": (500e3, 370e3), "hard": (5e6, 3.7e6)}  # K, G [Pa] [001 Table 1]
 
 
 def disk_mesh(radius, rings):
-    """Nodes (N, 2) and CCW triangles (T, 3) of a disk: centre, then ring k = 1..rings with 6k
-    nodes at radius k R/rings; consecutive rings zipped by angle. Also the rim's node ids."""
+    """Nodes (N, 2) and triangles (T, 3) of a disk centred at 0: centre, then ring k = 1..rings
+    with 6k nodes at radius k R/rings; consecutive rings zipped by angle."""
     nodes = [np.zeros((1, 2))]
     ids = [np.array([0])]
     angles = [np.array([0.0])]
@@ -54,7 +60,6 @@ def disk_mesh(radius, rings):
         ids.append(np.arange(start, start + 6 * k))
         angles.append(a)
         start += 6 * k
-    x = np.vstack(nodes)
     tris = [[0, int(ids[1][j]), int(ids[1][(j + 1) % 6])] for j in range(6)]
     for k in range(2, rings + 1):
         inner, outer, ai, ao = ids[k - 1], ids[k], angles[k - 1], angles[k]
@@ -69,34 +74,51 @@ def disk_mesh(radius, rings):
             else:
                 tris.append([int(inner[i % ni]), int(outer[j % no]), int(inner[(i + 1) % ni])])
                 i += 1
-    t = np.array(tris)
-    e1, e2 = x[t[:, 1]] - x[t[:, 0]], x[t[:, 2]] - x[t[:, 0]]
-    flip = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0] < 0
-    t[flip, 1], t[flip, 2] = t[flip, 2], t[flip, 1].copy()
-    return x, t, ids[rings]
+    return np.vstack(nodes), np.array(tris)
 
 
-class Disk:
-    """The elastic disk: reference mesh, lumped masses, internal forces and strain energy."""
+def rect_mesh(length, thickness, h):
+    """Nodes and triangles of the rectangle [−length, 0] × [−thickness/2, thickness/2] (its
+    front face at x = 0), cells of about h split along alternating diagonals."""
+    nx, ny = max(1, round(length / h)), max(2, round(thickness / h))
+    xs, ys = np.linspace(-length, 0, nx + 1), np.linspace(-thickness / 2, thickness / 2, ny + 1)
+    X = np.array([(x, y) for y in ys for x in xs])
+    idx = lambda i, j: j * (nx + 1) + i  # noqa: E731
+    tris = []
+    for j in range(ny):
+        for i in range(nx):
+            a, b, c, d = idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)
+            tris += [[a, b, c], [a, c, d]] if (i + j) % 2 == 0 else [[a, b, d], [b, c, d]]
+    return X, np.array(tris)
 
-    def __init__(self, K, G, h, law="hypoelastic"):
-        rings = max(2, round(RADIUS / h))
-        self.law = law
-        self.X, self.tri, self.rim = disk_mesh(RADIUS, rings)
+
+class Body:
+    """The elastic body: reference mesh, lumped masses, boundary nodes with their share of the
+    boundary length, internal forces and strain energy."""
+
+    def __init__(self, X, tri, K, G, h, law="hypoelastic"):
+        self.X, self.tri, self.h, self.law = X, tri, h, law
+        e1, e2 = X[tri[:, 1]] - X[tri[:, 0]], X[tri[:, 2]] - X[tri[:, 0]]
+        flip = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0] < 0
+        tri[flip, 1], tri[flip, 2] = tri[flip, 2], tri[flip, 1].copy()
         self.lam, self.mu = K - 2.0 * G / 3.0, G  # plane strain: λ of the 3D moduli
-        P = self.X[self.tri]  # (T, 3, 2)
+        P = X[tri]
         D = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]], axis=2)  # columns: edges
         self.area = 0.5 * np.linalg.det(D)
         assert (self.area > 0).all()
-        Dinv = np.linalg.inv(D)  # rows: ∇ of the barycentric coordinates 1, 2
-        g12 = Dinv  # (T, 2, 2): row a-1 is ∇N_a
+        g12 = np.linalg.inv(D)  # rows: ∇ of the barycentric coordinates 1, 2
         self.grad = np.concatenate([-(g12[:, 0:1] + g12[:, 1:2]), g12], axis=1)  # (T, 3, 2)
-        n = len(self.X)
-        self.mass = np.bincount(self.tri.ravel(), np.repeat(DENSITY * self.area / 3, 3),
-                                minlength=n)
-        self.rimLength = 2 * math.pi * RADIUS / len(self.rim)  # ℓ of each rim node
-        self.h = RADIUS / rings
-        self.sigma = np.zeros((len(self.tri), 3, 3))  # Cauchy stress (hypoelastic)
+        n = len(X)
+        self.mass = np.bincount(tri.ravel(), np.repeat(DENSITY * self.area / 3, 3), minlength=n)
+        # Boundary: the edges of one triangle only; each gives half its length to both ends.
+        edges = np.sort(np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]]), axis=1)
+        uniq, count = np.unique(edges, axis=0, return_counts=True)
+        bnd = uniq[count == 1]
+        half = 0.5 * np.linalg.norm(X[bnd[:, 0]] - X[bnd[:, 1]], axis=1)
+        share = np.bincount(bnd.ravel(), np.repeat(half, 2), minlength=n)
+        self.rim = np.nonzero(share)[0]
+        self.rimLength = share[self.rim]
+        self.sigma = np.zeros((len(tri), 3, 3))  # Cauchy stress (hypoelastic)
 
     def forces(self, u, v=None, dt=0.0):
         """Internal nodal forces (N, 2) and the strain energy [J/m] at displacements u.
@@ -111,7 +133,7 @@ class Disk:
         Dm = np.stack([x[:, 1] - x[:, 0], x[:, 2] - x[:, 0]], axis=2)
         a = 0.5 * np.linalg.det(Dm)
         if (a <= 0).any():
-            raise FloatingPointError("elasticDisk: an element inverted")
+            raise FloatingPointError("elasticImpact: an element inverted")
         n = len(self.X)
         if self.law == "neoHookean":
             F = np.eye(2) + np.einsum("tai,taj->tij", u[self.tri], self.grad)
@@ -147,43 +169,61 @@ class Disk:
         return f, energy
 
 
+def segment_push(x, a, b, radius):
+    """Penetration of the points x into the capsule of core a–b and `radius`, and the unit
+    normals pointing out of it."""
+    ab = b - a
+    s = np.clip(((x - a) @ ab) / (ab @ ab), 0.0, 1.0)
+    r = x - (a + s[:, None] * ab)
+    dist = np.linalg.norm(r, axis=1)
+    return np.maximum(radius - dist, 0.0), r / np.maximum(dist, 1e-30)[:, None]
+
+
 def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=True):
     K, G = MATERIALS[material]
-    d = Disk(K, G, h, law)
+    if case in ("collision", "drop"):
+        rings = max(2, round(RADIUS / h))
+        d = Body(*disk_mesh(RADIUS, rings), K, G, RADIUS / rings, law)
+        size = RADIUS
+    elif case == "rod":
+        d = Body(*rect_mesh(*ROD, h), K, G, h, law)
+        size = ROD[0]
+    else:
+        raise SystemExit(f"elasticImpact: unknown case '{case}' (collision, drop, rod)")
     M = d.mass.sum()
     pModulus = d.lam + 2 * d.mu
-    kc = kappa * pModulus / d.h  # N/m³: force per rim length per penetration
+    kc = kappa * pModulus / d.h  # N/m³: force per boundary length per penetration
     kNode = kc * d.rimLength
     cp = math.sqrt(pModulus / DENSITY)
-    mRim = d.mass[d.rim].min()
-    dt = 0.2 * min(d.h / cp, 2.0 / math.sqrt(kNode / mRim))
+    dt = 0.2 * min(d.h / cp, 2.0 / math.sqrt((kNode / d.mass[d.rim]).max()))
     n = len(d.X)
-    u = np.zeros((n, 2))
-    v = np.zeros((n, 2))
-    g = np.zeros(2)
-    if case == "collision":
-        v[:, 0] = SPEED
-        xB, vB = np.array([2 * RADIUS, 0.0]), np.zeros(2)  # touching at t = 0
-    elif case == "drop":
+    u, v, g = np.zeros((n, 2)), np.zeros((n, 2)), np.zeros(2)
+    free = case != "drop"  # the rigid body moves (collision, rod) or is the floor (drop)
+    if case == "drop":
         v[:, 1] = -SPEED
         g[1] = -GRAVITY
         floor = -RADIUS  # touching at t = 0
     else:
-        raise SystemExit(f"elasticDisk: unknown case '{case}' (collision, drop)")
+        v[:, 0] = SPEED
+        # touching at t = 0: the disk's centre 2R ahead, the capsule's core a ahead of the face
+        xB, vB = np.array([2 * RADIUS if case == "collision" else CAPSULE[1], 0.0]), np.zeros(2)
     rim = d.rim
 
     def contact(x):
-        """Forces on the rim nodes, the force on the rigid body and the penalty energy."""
+        """Forces on the boundary nodes, the force on the rigid body and the penalty energy."""
         f = np.zeros((len(rim), 2))
         if case == "collision":
             r = x[rim] - xB
             dist = np.linalg.norm(r, axis=1)
             pen = np.maximum(RADIUS - dist, 0.0)
             f = (kNode * pen / np.maximum(dist, 1e-30))[:, None] * r
+        elif case == "rod":
+            pen, normal = segment_push(x[rim], xB, xB + np.array([CAPSULE[0], 0.0]), CAPSULE[1])
+            f = (kNode * pen)[:, None] * normal
         else:
             pen = np.maximum(floor - x[rim, 1], 0.0)
             f[:, 1] = kNode * pen
-        return f, -f.sum(axis=0), 0.5 * kNode * np.sum(pen**2)
+        return f, -f.sum(axis=0), 0.5 * np.sum(kNode * pen**2)
 
     def accel(u, vHalf=None):
         fi, es = d.forces(u, vHalf, dt)
@@ -193,27 +233,27 @@ def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=T
 
     a, fB, es, ec, touching = accel(u)
     e0 = 0.5 * M * SPEED**2
-    ycom0 = 0.0
+    com0 = np.sum(d.mass[:, None] * d.X, axis=0) / M
     t, tEnd, lastTouch, maxDrift, trace = 0.0, None, 0.0, 0.0, []
-    tMax = 40.0 * RADIUS / math.sqrt(d.mu / DENSITY)
-    # Separated: no contact for 5 R/c_p (a rim node that touches again after a ring would show);
-    # for the drop at most half the time v₀/g the rebound takes to its apex.
-    wait = 5 * RADIUS / cp if case == "collision" else min(5 * RADIUS / cp, 0.5 * SPEED / GRAVITY)
+    tMax = 40.0 * size / math.sqrt(d.mu / DENSITY)
+    # Separated: no contact for 5 R/c_p (a boundary node that touches again after a ring would
+    # show); for the drop at most half the time v₀/g the rebound takes to its apex.
+    wait = 5 * RADIUS / cp if free else min(5 * RADIUS / cp, 0.5 * SPEED / GRAVITY)
     while t < tMax:
         v += 0.5 * dt * a
         u += dt * v
-        if case == "collision":
+        if free:
             vB += 0.5 * dt * fB / M
             xB = xB + dt * vB
         a, fB, es, ec, touching = accel(u, v)
         v += 0.5 * dt * a
-        if case == "collision":
+        if free:
             vB += 0.5 * dt * fB / M
         t += dt
         com = np.sum(d.mass[:, None] * (d.X + u), axis=0) / M
         ke = 0.5 * np.sum(d.mass * np.sum(v * v, axis=1))
-        total = ke + es + ec - M * g[1] * (com[1] - ycom0)
-        if case == "collision":
+        total = ke + es + ec - M * g[1] * (com[1] - com0[1])
+        if free:
             total += 0.5 * M * vB @ vB
         maxDrift = max(maxDrift, abs(total - e0) / e0)
         trace.append((t, com[0], com[1], np.linalg.norm(fB), ke, es))
@@ -223,15 +263,15 @@ def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=T
             tEnd = t
             break
     vcom = np.sum(d.mass[:, None] * v, axis=0) / M
-    if case == "collision":
+    if free:
         result = vB[0] / SPEED
     else:
-        result = (0.5 * M * vcom @ vcom + M * GRAVITY * (com[1] - ycom0)) / e0
-    r = dict(case=case, material=material, law=law, h=d.h, kappa=kappa, nodes=n, elements=len(d.tri),
-             result=result, contact=lastTouch, drift=maxDrift, dt=dt, separated=tEnd is not None,
-             vOverC=SPEED / cp, trace=np.array(trace))
+        result = (0.5 * M * vcom @ vcom + M * GRAVITY * (com[1] - com0[1])) / e0
+    r = dict(case=case, material=material, law=law, h=d.h, kappa=kappa, nodes=n,
+             elements=len(d.tri), result=result, contact=lastTouch, drift=maxDrift, dt=dt,
+             separated=tEnd is not None, vOverC=SPEED / cp, trace=np.array(trace))
     if not quiet:
-        what = "v_B/v0" if case == "collision" else "E_r/E_d"
+        what = "E_r/E_d" if case == "drop" else "v_B/v0"
         print(f"{case} {material} {law}: h = {d.h * 1e3:.3f} mm, kappa = {kappa:g}, {n} nodes, "
               f"dt = {dt:.3g} s: {what} = {result:.4f}, contact {lastTouch * 1e3:.3f} ms, "
               f"energy drift {maxDrift:.1e}" + ("" if tEnd else " (not separated)"))
@@ -240,9 +280,9 @@ def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=T
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("case", choices=["collision", "drop"])
+    ap.add_argument("case", choices=["collision", "drop", "rod"])
     ap.add_argument("--material", choices=sorted(MATERIALS), default="hard")
-    ap.add_argument("--h", type=float, default=0.5e-3, help="ring spacing [m]")
+    ap.add_argument("--h", type=float, default=0.5e-3, help="mesh size [m]")
     ap.add_argument("--kappa", type=float, default=100.0, help="k_c (λ + 2μ)⁻¹ h")
     ap.add_argument("--law", choices=["hypoelastic", "neoHookean"], default="hypoelastic")
     a = ap.parse_args()
