@@ -32,8 +32,8 @@ enum ViscoelasticState : int { elasticState = 0, flowingState = 1, separatedStat
 ///   Dᵖ = γ̇ᵖ σ_dev/(2τ) [Eq. 48–49], and no tension: σ = σᵉ = 0 when p_tr ≤ 0 or ρ ≤ ρ_c
 ///   [Eq. 46–47].
 /// Per step and point (App. A; seed002-notes §1.3), with ΔF = 1 + Δt L, D = sym L, W = skw L:
-///   1. σᵉ_tr = Q σᵉ Qᵀ + ℂ : (Q½ Δt D Q½ᵀ), Q = exp(Δt W), Q½ = exp(½ Δt W) (exact for a
-///      rigid rotation, [Eq. 52]);
+///   1. σᵉ_tr = Q σᵉ Qᵀ + ℂ : Δt D, Q = exp(Δt W) (exact for a rigid rotation, [Eq. 52]; the
+///      increment in the end-of-step frame, docs/viscoelastic.md §5);
 ///   2. σ_tr = σᵉ_tr + ϑ tr D 1 + 2η D_dev [Eq. 51]; p_tr = −tr σ_tr/3, τ_tr = √(½ s_tr : s_tr);
 ///   3. separated if p_tr ≤ 0 or ρ ≤ ρ_c: σ = σᵉ = 0, γ̇ᵖ = 0;
 ///   4. elastic if τ_tr ≤ μ_s p_tr [Eq. 53]: σ = σ_tr, σᵉ = σᵉ_tr, γ̇ᵖ = 0;
