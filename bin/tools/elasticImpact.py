@@ -234,7 +234,7 @@ def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=T
     a, fB, es, ec, touching = accel(u)
     e0 = 0.5 * M * SPEED**2
     com0 = np.sum(d.mass[:, None] * d.X, axis=0) / M
-    t, tEnd, lastTouch, maxDrift, trace = 0.0, None, 0.0, 0.0, []
+    t, tEnd, lastTouch, maxDrift = 0.0, None, 0.0, 0.0
     tMax = 40.0 * size / math.sqrt(d.mu / DENSITY)
     # Separated: no contact for 5 R/c_p (a boundary node that touches again after a ring would
     # show); for the drop at most half the time v₀/g the rebound takes to its apex.
@@ -256,7 +256,6 @@ def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=T
         if free:
             total += 0.5 * M * vB @ vB
         maxDrift = max(maxDrift, abs(total - e0) / e0)
-        trace.append((t, com[0], com[1], np.linalg.norm(fB), ke, es))
         if touching:
             lastTouch = t
         elif t > lastTouch + wait and lastTouch > 0:
@@ -269,7 +268,7 @@ def run(case, material="hard", h=0.5e-3, kappa=100.0, law="hypoelastic", quiet=T
         result = (0.5 * M * vcom @ vcom + M * GRAVITY * (com[1] - com0[1])) / e0
     r = dict(case=case, material=material, law=law, h=d.h, kappa=kappa, nodes=n,
              elements=len(d.tri), result=result, contact=lastTouch, drift=maxDrift, dt=dt,
-             separated=tEnd is not None, vOverC=SPEED / cp, trace=np.array(trace))
+             separated=tEnd is not None, vOverC=SPEED / cp)
     if not quiet:
         what = "E_r/E_d" if case == "drop" else "v_B/v0"
         print(f"{case} {material} {law}: h = {d.h * 1e3:.3f} mm, kappa = {kappa:g}, {n} nodes, "
