@@ -27,14 +27,18 @@ double continuumRestitution(double zeta) {
 
 namespace {
 
-/// exp(A) of a skew-symmetric A = [w]× by Rodrigues' formula: a rotation.
-Mat3 rotationOf(const Mat3& A) {
-    const double t2 = A(2, 1) * A(2, 1) + A(0, 2) * A(0, 2) + A(1, 0) * A(1, 0); // |w|²
-    const Mat3 A2 = A * A;
-    if (t2 < 1e-12) // series to O(θ⁴): exact to round-off for θ < 1e-6
-        return Mat3::Identity() + (1.0 - t2 / 6.0) * A + (0.5 - t2 / 24.0) * A2;
+/// Rodrigues' coefficients of exp([w]×) = 1 + a [w]× + b [w]×², from t² = |w|²:
+/// a = sin t / t, b = (1 − cos t)/t²; by their series below t = 0.1 (the next terms, t¹⁰/11! and
+/// t¹⁰/12!, are under 3·10⁻¹⁸).
+void rodrigues(double t2, double& a, double& b) {
+    if (t2 < 1e-2) {
+        a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0 * (1.0 - t2 / 72.0)));
+        b = 0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0 * (1.0 - t2 / 90.0)));
+        return;
+    }
     const double t = std::sqrt(t2);
-    return Mat3::Identity() + (std::sin(t) / t) * A + ((1.0 - std::cos(t)) / t2) * A2;
+    a = std::sin(t) / t;
+    b = (1.0 - std::cos(t)) / t2;
 }
 
 /// The keys naming the damping; at most one of restitution and bulkViscosity.
@@ -105,59 +109,125 @@ double ViscoelasticMuI<dim>::strainEnergy(const Particles<dim>& p, Index i) cons
 template <int dim>
 Index ViscoelasticMuI<dim>::updateStress(Particles<dim>& p, const std::vector<Index>& ids,
                                          double dt) const {
+    // Points go through in batches of Lanes in structure-of-arrays form, so that the update
+    // vectorises across points (as HenckyBatch); the three outcomes are selected per lane.
+    // Symmetric tensors are kept as their six entries (00 11 22 01 02 12).
+    constexpr int Lanes = 8;
     const Index n = static_cast<Index>(ids.size());
+    const Index batches = (n + Lanes - 1) / Lanes;
     const double lambda = c_.lambda, G = c_.G;
     const double theta = bulkViscosity_, eta = shearViscosity_;
     const double Gt = G + eta / dt; // G̃ [Eq. 55]
     const double alphaCoef = I0_ * Gt * dt / (grainDiameter_ * std::sqrt(grainDensity_)); // α/√p
+    const double muS = muS_, mu2 = mu2_, rhoC = rhoC_;
     std::vector<Mat3>& sigmaE = p.tensor(elasticStress_);
     std::vector<double>& rate = p.scalar(strainRate_);
     std::vector<int>& state = p.flag(state_);
     Index bad = n;
-#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : bad)
-    for (Index k = 0; k < n; ++k) {
-        const Index i = ids[k];
-        const Mat3 L = embed3<dim>(p.L[i]);
-        const Mat3 D = 0.5 * (L + L.transpose());
-        const Mat3 W = 0.5 * (L - L.transpose());
-        const double trD = D.trace();
-        const Mat3 Ddev = D - (trD / 3.0) * Mat3::Identity();
-        // 1. Objective elastic trial [Eq. 52]: σᵉ rotated by Q = exp(Δt W), the increment
-        //    ℂ : Δt D taken at the end of the step (not half-rotated, Q½ Δt D Q½ᵀ): the return
-        //    is implicit, and in fast flow the stress must align with the rate it returns to
-        //    (docs/viscoelastic.md §1, "why the increment is not rotated").
-        const Mat3 Q = rotationOf(dt * W);
-        const Mat3 eTrial =
-            Q * sigmaE[i] * Q.transpose() + dt * (lambda * trD * Mat3::Identity() + 2.0 * G * D);
-        // 2. Viscoelastic trial [Eq. 51].
-        const Mat3 trial = eTrial + theta * trD * Mat3::Identity() + 2.0 * eta * Ddev;
-        const double pTr = -trial.trace() / 3.0;
-        const Mat3 s = trial + pTr * Mat3::Identity();
-        const double tauTr = std::sqrt(0.5 * s.squaredNorm());
-        double gammaDot = 0.0;
-        if (pTr <= 0.0 || p.mass[i] / p.volume[i] <= rhoC_) { // 3. separation [Eq. 46–47]
-            p.stress[i].setZero();
-            sigmaE[i].setZero();
-            state[i] = separatedState;
-        } else if (tauTr <= muS_ * pTr) { // 4. below the static yield surface [Eq. 53]
-            p.stress[i] = trial;
-            sigmaE[i] = eTrial;
-            state[i] = elasticState;
-        } else { // 5. modified radial return [Eq. 55–60]
-            const double alpha = alphaCoef * std::sqrt(pTr);
-            const double S0 = muS_ * pTr, S2 = mu2_ * pTr;
-            const double B = S2 + tauTr + alpha, H = S2 * tauTr + S0 * alpha;
-            const double tau = 2.0 * H / (B + std::sqrt(std::max(B * B - 4.0 * H, 0.0)));
-            gammaDot = (tauTr - tau) / (Gt * dt);
-            p.stress[i] = (tau / tauTr) * s - pTr * Mat3::Identity();
-            // 6. Elastic stress for the next step [Eq. 61]: Dᵖ = γ̇ᵖ N/√2, N = s/|s|.
-            const Mat3 Dp = (0.5 * gammaDot / tauTr) * s;
-            sigmaE[i] = p.stress[i] - theta * trD * Mat3::Identity() - 2.0 * eta * (Ddev - Dp);
-            state[i] = flowingState;
+#pragma omp parallel for if (worthThreads(8 * batches)) schedule(static) reduction(min : bad)
+    for (Index b = 0; b < batches; ++b) {
+        Index idx[Lanes];
+        alignas(64) double d[6][Lanes], w[3][Lanes], se[6][Lanes], rho[Lanes], ra[Lanes], rb[Lanes];
+        for (int l = 0; l < Lanes; ++l) {
+            const Index i = ids[std::min(b * Lanes + l, n - 1)];
+            idx[l] = i;
+            const Mat3 L = embed3<dim>(p.L[i]);
+            // D = sym L, Δt W = [w]× with W = skw L.
+            d[0][l] = L(0, 0), d[1][l] = L(1, 1), d[2][l] = L(2, 2);
+            d[3][l] = 0.5 * (L(0, 1) + L(1, 0));
+            d[4][l] = 0.5 * (L(0, 2) + L(2, 0));
+            d[5][l] = 0.5 * (L(1, 2) + L(2, 1));
+            w[0][l] = dt * (0.5 * (L(2, 1) - L(1, 2)));
+            w[1][l] = dt * (0.5 * (L(0, 2) - L(2, 0)));
+            w[2][l] = dt * (0.5 * (L(1, 0) - L(0, 1)));
+            rodrigues(w[0][l] * w[0][l] + w[1][l] * w[1][l] + w[2][l] * w[2][l], ra[l], rb[l]);
+            const Mat3& S = sigmaE[i];
+            se[0][l] = S(0, 0), se[1][l] = S(1, 1), se[2][l] = S(2, 2);
+            se[3][l] = S(0, 1), se[4][l] = S(0, 2), se[5][l] = S(1, 2);
+            rho[l] = p.mass[i] / p.volume[i];
         }
-        rate[i] = gammaDot;
-        p.plasticStrain[i] += gammaDot * dt;
-        if (!std::isfinite(p.stress[i].sum() + sigmaE[i].sum() + gammaDot)) bad = std::min(bad, k);
+        alignas(64) double sig[6][Lanes], sigE[6][Lanes], gdot[Lanes], st[Lanes];
+#pragma omp simd
+        for (int l = 0; l < Lanes; ++l) {
+            // 1. Objective elastic trial [Eq. 52]: σᵉ rotated by Q = exp(Δt W) (Rodrigues,
+            //    [w]×² = w wᵀ − |w|² 1), the increment ℂ : Δt D taken at the end of the step (not
+            //    half-rotated): the return is implicit, and in fast flow the stress must align
+            //    with the rate it returns to (docs/viscoelastic.md §5).
+            const double wx = w[0][l], wy = w[1][l], wz = w[2][l];
+            const double a = ra[l], bb = rb[l], t2 = wx * wx + wy * wy + wz * wz;
+            const double Q[3][3] = {
+                {1.0 + bb * (wx * wx - t2), -a * wz + bb * wx * wy, a * wy + bb * wx * wz},
+                {a * wz + bb * wx * wy, 1.0 + bb * (wy * wy - t2), -a * wx + bb * wy * wz},
+                {-a * wy + bb * wx * wz, a * wx + bb * wy * wz, 1.0 + bb * (wz * wz - t2)}};
+            const double S[3][3] = {{se[0][l], se[3][l], se[4][l]},
+                                    {se[3][l], se[1][l], se[5][l]},
+                                    {se[4][l], se[5][l], se[2][l]}};
+            double M[3][3]; // Q σᵉ
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    M[r][c] = Q[r][0] * S[0][c] + Q[r][1] * S[1][c] + Q[r][2] * S[2][c];
+            auto rot = [&](int r, int c) { // (Q σᵉ Qᵀ)_rc
+                return M[r][0] * Q[c][0] + M[r][1] * Q[c][1] + M[r][2] * Q[c][2];
+            };
+            const double trD = d[0][l] + d[1][l] + d[2][l];
+            const double diagE = dt * lambda * trD, twoGdt = 2.0 * G * dt;
+            double e[6] = {
+                rot(0, 0) + diagE + twoGdt * d[0][l], rot(1, 1) + diagE + twoGdt * d[1][l],
+                rot(2, 2) + diagE + twoGdt * d[2][l], rot(0, 1) + twoGdt * d[3][l],
+                rot(0, 2) + twoGdt * d[4][l],         rot(1, 2) + twoGdt * d[5][l]};
+            // 2. Viscoelastic trial [Eq. 51]: σ_tr = σᵉ_tr + ϑ tr D 1 + 2η D_dev.
+            const double trThird = trD / 3.0;
+            double dev[6]; // D_dev
+            for (int k = 0; k < 6; ++k)
+                dev[k] = d[k][l] - (k < 3 ? trThird : 0.0);
+            double tr[6];
+            for (int k = 0; k < 6; ++k)
+                tr[k] = e[k] + (k < 3 ? theta * trD : 0.0) + 2.0 * eta * dev[k];
+            const double pTr = -(tr[0] + tr[1] + tr[2]) / 3.0;
+            double s[6]; // deviator of the trial
+            for (int k = 0; k < 6; ++k)
+                s[k] = tr[k] + (k < 3 ? pTr : 0.0);
+            const double tauTr = std::sqrt(0.5 * (s[0] * s[0] + s[1] * s[1] + s[2] * s[2] +
+                                                  2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
+            // 3.–5. Separated [Eq. 46–47], below the static yield surface [Eq. 53], or the
+            //        modified radial return [Eq. 55–60] (computed in every lane, selected).
+            const bool separated = (pTr <= 0.0) | (rho[l] <= rhoC);
+            const bool flowing = !separated & (tauTr > muS * pTr);
+            const double alpha = alphaCoef * std::sqrt(pTr > 0.0 ? pTr : 0.0);
+            const double S0 = muS * pTr, S2 = mu2 * pTr;
+            const double B = S2 + tauTr + alpha, H = S2 * tauTr + S0 * alpha;
+            const double disc = B * B - 4.0 * H;
+            const double tau = 2.0 * H / (B + std::sqrt(disc > 0.0 ? disc : 0.0));
+            const double gammaDot = flowing ? (tauTr - tau) / (Gt * dt) : 0.0;
+            const double scale = tau / tauTr;
+            // 6. Elastic stress for the next step [Eq. 61]: Dᵖ = γ̇ᵖ N/√2, N = s/|s|.
+            const double dpScale = 0.5 * gammaDot / tauTr;
+            for (int k = 0; k < 6; ++k) {
+                const double sf = scale * s[k] - (k < 3 ? pTr : 0.0);
+                const double ef =
+                    sf - (k < 3 ? theta * trD : 0.0) - 2.0 * eta * (dev[k] - dpScale * s[k]);
+                sig[k][l] = separated ? 0.0 : (flowing ? sf : tr[k]);
+                sigE[k][l] = separated ? 0.0 : (flowing ? ef : e[k]);
+            }
+            gdot[l] = gammaDot;
+            st[l] = separated ? 2.0 : (flowing ? 1.0 : 0.0);
+        }
+        for (int l = 0; l < Lanes; ++l) {
+            if (b * Lanes + l >= n) break;
+            const Index i = idx[l];
+            p.stress[i] << sig[0][l], sig[3][l], sig[4][l], sig[3][l], sig[1][l], sig[5][l],
+                sig[4][l], sig[5][l], sig[2][l];
+            sigmaE[i] << sigE[0][l], sigE[3][l], sigE[4][l], sigE[3][l], sigE[1][l], sigE[5][l],
+                sigE[4][l], sigE[5][l], sigE[2][l];
+            state[i] = st[l] == 2.0 ? separatedState : (st[l] == 1.0 ? flowingState : elasticState);
+            rate[i] = gdot[l];
+            p.plasticStrain[i] += gdot[l] * dt;
+            // Checked on the lanes, not re-read from the tensors just stored.
+            double sum = gdot[l];
+            for (int k = 0; k < 6; ++k)
+                sum += sig[k][l] + sigE[k][l];
+            if (!std::isfinite(sum)) bad = std::min(bad, b * Lanes + l);
+        }
     }
     return bad < n ? ids[bad] : -1;
 }
