@@ -3,6 +3,7 @@
 
 #include "core/Parallel.hpp"
 #include "materials/FlowRules.hpp"
+#include "materials/HenckyBatch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -110,7 +111,8 @@ template <int dim>
 Index ViscoelasticMuI<dim>::updateStress(Particles<dim>& p, const std::vector<Index>& ids,
                                          double dt) const {
     // Points go through in batches of Lanes in structure-of-arrays form, so that the update
-    // vectorises across points (as HenckyBatch); the three outcomes are selected per lane.
+    // vectorises across points (as HenckyBatch, whose lane-to-tensor helper stores the results);
+    // the three outcomes are selected per lane.
     // Symmetric tensors are kept as their six entries (00 11 22 01 02 12).
     constexpr int Lanes = 8;
     const Index n = static_cast<Index>(ids.size());
@@ -215,10 +217,8 @@ Index ViscoelasticMuI<dim>::updateStress(Particles<dim>& p, const std::vector<In
         for (int l = 0; l < Lanes; ++l) {
             if (b * Lanes + l >= n) break;
             const Index i = idx[l];
-            p.stress[i] << sig[0][l], sig[3][l], sig[4][l], sig[3][l], sig[1][l], sig[5][l],
-                sig[4][l], sig[5][l], sig[2][l];
-            sigmaE[i] << sigE[0][l], sigE[3][l], sigE[4][l], sigE[3][l], sigE[1][l], sigE[5][l],
-                sigE[4][l], sigE[5][l], sigE[2][l];
+            p.stress[i] = HenckyBatch<Lanes>::tensor(sig, l);
+            sigmaE[i] = HenckyBatch<Lanes>::tensor(sigE, l);
             state[i] = st[l] == 2.0 ? separatedState : (st[l] == 1.0 ? flowingState : elasticState);
             rate[i] = gdot[l];
             p.plasticStrain[i] += gdot[l] * dt;
