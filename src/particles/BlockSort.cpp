@@ -111,8 +111,10 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
     }
     begin_.push_back(n);
 
-    for (auto& c : colourBlocks_)
-        c.clear();
+    for (int c = 0; c < NumColours; ++c) {
+        colourBlocks_[c].clear();
+        colourPrefix_[c].assign(1, 0);
+    }
     for (Index b : activeNodeBlocks_)
         active_[b] = 0;
     activeNodeBlocks_.clear();
@@ -123,6 +125,8 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
         for (int d = 0; d < dim; ++d)
             colour |= (c[d] & 1) << d;
         colourBlocks_[colour].push_back(b);
+        const Range r = particlesOf(b);
+        colourPrefix_[colour].push_back(colourPrefix_[colour].back() + r.end - r.begin);
         // Mark the 3^dim neighbourhood.
         forEachNeighbourOffset<dim>([&](const IVec<dim>& o) {
             bool inside = true;
@@ -140,6 +144,30 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
     }
     std::sort(activeNodeBlocks_.begin(), activeNodeBlocks_.end());
     return -1;
+}
+
+template <int dim> void BlockSort<dim>::visitOrder(std::vector<Index>& out) const {
+    out.clear();
+    out.reserve(order_.size());
+    for (const auto& blocks : colourBlocks_)
+        for (Index b : blocks) {
+            const Range r = particlesOf(b);
+            out.insert(out.end(), order_.begin() + r.begin, order_.begin() + r.end);
+        }
+}
+
+template <int dim>
+typename BlockSort<dim>::Range BlockSort<dim>::shareOf(int c, int t, int team) const {
+    // Block k goes to the thread whose slice [total t/team, total (t+1)/team) of the colour's
+    // particles holds its first particle.
+    const std::vector<Index>& prefix = colourPrefix_[c];
+    const Index total = prefix.back();
+    const Index nb = static_cast<Index>(prefix.size()) - 1;
+    auto firstFrom = [&](Index rank) {
+        return static_cast<Index>(std::lower_bound(prefix.begin(), prefix.begin() + nb, rank) -
+                                  prefix.begin());
+    };
+    return Range{firstFrom(total * t / team), firstFrom(total * (t + 1) / team)};
 }
 
 template class BlockSort<2>;

@@ -6,6 +6,7 @@
 #include "particles/Particles.hpp"
 
 #include <cstdint>
+#include <omp.h>
 #include <vector>
 
 namespace mpm {
@@ -39,13 +40,41 @@ public:
         const std::int32_t k = slot_[b];
         return k < 0 ? Range{} : Range{begin_[k], begin_[k + 1]};
     }
+    /// The particles in the order P2G visits them: colour by colour, each colour's blocks
+    /// ascending, each block's particles as in order(). Stored in this order (the periodic
+    /// reorder), the particles are read front to back by P2G as by every other phase.
+    void visitOrder(std::vector<Index>& out) const;
     /// Non-empty blocks, ascending.
     const std::vector<Index>& occupiedBlocks() const { return blocks_; }
     /// Non-empty blocks of colour c, ascending.
     const std::vector<Index>& blocksOfColour(int c) const { return colourBlocks_[c]; }
+    /// Thread t's share of colour c in a team of `team`: positions [begin, end) in
+    /// blocksOfColour(c), contiguous, with about 1/team of the colour's particles.
+    Range shareOf(int c, int t, int team) const;
+
+    /// Visit every non-empty block, fn(block, particlesOf(block)): colour after colour, the
+    /// blocks of one colour in parallel (with `parallel`), each thread a contiguous share of
+    /// them (shareOf), which visitOrder stores contiguously. Blocks of one colour share no
+    /// stencil node, so every node sees its contributions in one order for any team.
+    template <class Fn> void forEachBlockByColour(bool parallel, Fn&& fn) const {
+#pragma omp parallel if (parallel)
+        {
+            const int team = omp_get_num_threads(), t = omp_get_thread_num();
+            for (int c = 0; c < NumColours; ++c) {
+                const Range share = shareOf(c, t, team);
+                for (Index k = share.begin; k < share.end; ++k) {
+                    const Index b = colourBlocks_[c][k];
+                    fn(b, particlesOf(b));
+                }
+#pragma omp barrier
+            }
+        }
+    }
     /// Node blocks that can receive mass: the 3^dim neighbourhood of every non-empty block,
     /// ascending.
-    const std::vector<Index>& activeNodeBlocks() const { return activeNodeBlocks_; }
+    const std::vector<Index>& activeNodeBlocks() const {
+        return activeNodeBlocks_;
+    }
 
 private:
     /// order_ = the particles stably sorted by block_: LSD radix sort of ≤ 16 bits a pass, each
@@ -61,7 +90,8 @@ private:
     std::vector<Index> begin_;       ///< begin_[k]: first position of blocks_[k]; begin_.back() = n
     std::vector<std::int32_t> slot_; ///< per block of the box: k in blocks_, or -1
     std::vector<Index> colourBlocks_[NumColours];
-    std::vector<char> active_; ///< per block of the box: in activeNodeBlocks_
+    std::vector<Index> colourPrefix_[NumColours]; ///< particles in the first k blocks of a colour
+    std::vector<char> active_;                    ///< per block of the box: in activeNodeBlocks_
     std::vector<Index> activeNodeBlocks_;
 };
 

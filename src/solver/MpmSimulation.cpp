@@ -299,9 +299,10 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
     const Index outside = sort_.update(particles_, grid_);
     failIfAny(outside >= 0, "sort", outside, "left the grid");
     // Every ReorderInterval steps (by absolute step index, so a restart reorders at the same
-    // steps) store the particles in block order, for locality in P2G and G2P.
+    // steps) store the particles in the order P2G visits them, for locality in P2G and G2P.
     if ((preloading_ ? preloadIndex_ : time_->index()) % ReorderInterval == 0) {
-        particles_.permute(sort_.order(), scratch_);
+        sort_.visitOrder(reorder_);
+        particles_.permute(reorder_, scratch_);
         sort_.update(particles_, grid_);
         buildMaterialLists();
     }

@@ -147,6 +147,7 @@ private:
     double accelerationWork_ = 0;                         ///< State::accelerationWork [J]
     Particles<dim> particles_;
     PermuteBuffers<dim> scratch_; ///< reorder buffers, kept between reorders
+    std::vector<Index> reorder_;  ///< the reorder's permutation (BlockSort::visitOrder)
     std::vector<std::unique_ptr<Material<dim>>> materials_;
     std::vector<char> volumeFromRate_; ///< per material: V from Eq. 76, not det F
     std::vector<std::vector<Index>> materialParticles_;

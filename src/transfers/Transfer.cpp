@@ -91,19 +91,14 @@ public:
     void scatterScalar(const std::vector<double>& q, NodeArray<double>& out,
                        const BlockSort<dim>& sort) const override {
         const auto& order = sort.order();
-        for (int colour = 0; colour < BlockSort<dim>::NumColours; ++colour) {
-            const auto& blocks = sort.blocksOfColour(colour);
-            const Index nb = static_cast<Index>(blocks.size());
-#pragma omp parallel for if (worthThreads(static_cast <Index>(q.size()))) schedule(dynamic, 1)
-            for (Index bi = 0; bi < nb; ++bi) {
-                const auto r = sort.particlesOf(blocks[bi]);
-                for (Index j = r.begin; j < r.end; ++j) {
-                    const Index i = order[j];
-                    forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&,
-                                           const Vec<dim>&) { out[node] += wgt * q[i]; });
-                }
+        sort.forEachBlockByColour(worthThreads(static_cast<Index>(q.size())), [&](Index, auto r) {
+            for (Index j = r.begin; j < r.end; ++j) {
+                const Index i = order[j];
+                forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
+                    out[node] += wgt * q[i];
+                });
             }
-        }
+        });
     }
 
     void gatherScalar(const NodeArray<double>& q, std::vector<double>& out) const override {
@@ -317,25 +312,19 @@ private:
         const double invH = g.invH();
         const auto& order = sort.order();
         NodeLine* lines = g.lines.data();
-        for (int colour = 0; colour < BlockSort<dim>::NumColours; ++colour) {
-            const auto& blocks = sort.blocksOfColour(colour);
-            const Index nb = static_cast<Index>(blocks.size());
-#pragma omp parallel for if (worthThreads(static_cast <Index>(p.size()))) schedule(dynamic, 1)
-            for (Index bi = 0; bi < nb; ++bi) {
-                const auto r = sort.particlesOf(blocks[bi]);
-                for (Index j = r.begin; j < r.end; ++j) {
-                    const Index i = order[j];
-                    const double m = p.mass[i];
-                    Mat<dim> mC = Mat<dim>::Zero();
-                    if constexpr (Affine) mC = (m * h) * p.C[i];
-                    Mat<dim> stressTerm = Mat<dim>::Zero();
-                    if constexpr (Stress)
-                        stressTerm =
-                            (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
-                    scatterOne<Momentum, Stress>(st_[i], lines, m, m * p.v[i], mC, stressTerm);
-                }
+        sort.forEachBlockByColour(worthThreads(static_cast<Index>(p.size())), [&](Index, auto r) {
+            for (Index j = r.begin; j < r.end; ++j) {
+                const Index i = order[j];
+                const double m = p.mass[i];
+                Mat<dim> mC = Mat<dim>::Zero();
+                if constexpr (Affine) mC = (m * h) * p.C[i];
+                Mat<dim> stressTerm = Mat<dim>::Zero();
+                if constexpr (Stress)
+                    stressTerm =
+                        (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
+                scatterOne<Momentum, Stress>(st_[i], lines, m, m * p.v[i], mC, stressTerm);
             }
-        }
+        });
         forActiveLines(g, [&g](Index n, const NodeLine& q) {
             if constexpr (Momentum) {
                 g.mass[n] += q.v[0];

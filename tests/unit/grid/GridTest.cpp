@@ -409,6 +409,53 @@ TEST(BlockSort, SortIsTheStableCountingSortForAnyThreadCount) {
     omp_set_num_threads(threads);
 }
 
+TEST(BlockSort, ThreadSharesPartitionEachColourAndVisitOrderFollowsThem) {
+    // Each colour's blocks are split into contiguous shares, one per thread, that cover every
+    // block once and hold 1/team of the colour's particles to within one block's; visitOrder lists
+    // the particles in exactly the order forEachBlockByColour visits them, on any team.
+    const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\ncellSize: 0.03125\n"));
+    const Particles<3> p = randomParticles(g, 20000, 9);
+    BlockSort<3> sort;
+    ASSERT_EQ(sort.update(p, g), -1);
+    const auto& order = sort.order();
+    std::vector<Index> visit;
+    sort.visitOrder(visit);
+    ASSERT_EQ(visit.size(), p.size());
+    std::vector<Index> sorted = visit;
+    std::sort(sorted.begin(), sorted.end());
+    for (Index i = 0; i < static_cast<Index>(sorted.size()); ++i)
+        ASSERT_EQ(sorted[i], i);
+    for (int team : {1, 2, 3, 7}) {
+        std::vector<Index> walked;
+        for (int c = 0; c < BlockSort<3>::NumColours; ++c) {
+            const auto& blocks = sort.blocksOfColour(c);
+            Index next = 0, total = 0, biggestBlock = 0;
+            std::vector<Index> counts;
+            for (int t = 0; t < team; ++t) {
+                const auto share = sort.shareOf(c, t, team);
+                ASSERT_EQ(share.begin, next) << "colour " << c << ", thread " << t;
+                ASSERT_LE(share.begin, share.end);
+                next = share.end;
+                Index count = 0;
+                for (Index k = share.begin; k < share.end; ++k) {
+                    const auto r = sort.particlesOf(blocks[k]);
+                    count += r.end - r.begin;
+                    biggestBlock = std::max(biggestBlock, r.end - r.begin);
+                    walked.insert(walked.end(), order.begin() + r.begin, order.begin() + r.end);
+                }
+                counts.push_back(count);
+                total += count;
+            }
+            EXPECT_EQ(next, static_cast<Index>(blocks.size())) << "colour " << c;
+            for (Index count : counts)
+                EXPECT_LE(std::abs(static_cast<double>(count) - static_cast<double>(total) / team),
+                          biggestBlock + 1.0)
+                    << "colour " << c << ", team " << team;
+        }
+        EXPECT_EQ(walked, visit) << team << " threads";
+    }
+}
+
 TEST(BlockSort, ReportsFirstParticleOutsideArrays) {
     const Grid<2> g(parse("bounds: {min: [0, 0], max: [1, 1]}\ncellSize: 0.25\n"));
     Particles<2> p = randomParticles(g, 10, 3);
