@@ -3,6 +3,7 @@
 
 #include "core/Types.hpp"
 
+#include <cassert>
 #include <cmath>
 
 namespace mpm {
@@ -94,7 +95,12 @@ inline void jacobiRotate(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
 /// compiler vectorises across lanes; sweeps stop when every lane has converged. Each lane gives
 /// the same result as it would alone, whatever its neighbours (extra sweeps leave a converged
 /// lane unchanged to round-off only, so results are deterministic for a fixed batching).
-template <int Lanes> void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]);
+///
+/// `Plane`: every lane has a02 = a12 = 0 (plane strain), so one rotation in the (0, 1) plane
+/// diagonalises it; the result is bit for bit that of the full sweeps, whose other rotations
+/// are then exact no-ops.
+template <int Lanes, bool Plane = false>
+void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]);
 
 template <int Lanes> void symmetricEigen3Batch(const Mat3* A, Vec3* lambda, Mat3* Q) {
     alignas(64) double a[6][Lanes];
@@ -116,7 +122,8 @@ template <int Lanes> void symmetricEigen3Batch(const Mat3* A, Vec3* lambda, Mat3
 /// symmetricEigen3Batch on matrices already in lanes (structure of arrays): a holds
 /// (a00 a11 a22 a01 a02 a12) of each lane on entry and the eigenvalues in a[0…2] on return
 /// (a[3…5] ≈ 0); q gets the eigenvectors, q[3 i + j] = Q_ij (column j the j-th eigenvector).
-template <int Lanes> void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
+template <int Lanes, bool Plane>
+void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
     alignas(64) double tol[Lanes];
 #pragma omp simd
     for (int l = 0; l < Lanes; ++l) {
@@ -125,14 +132,18 @@ template <int Lanes> void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q
         tol[l] = 1e-30 + 1e-16 * (std::fabs(a[0][l]) + std::fabs(a[1][l]) + std::fabs(a[2][l]) +
                                   std::fabs(a[3][l]) + std::fabs(a[4][l]) + std::fabs(a[5][l]));
     }
-    for (int sweep = 0; sweep < 12; ++sweep) {
+    for (int sweep = 0; sweep < (Plane ? 1 : 12); ++sweep) {
         bool done = true;
-        for (int l = 0; l < Lanes; ++l)
+        for (int l = 0; l < Lanes; ++l) {
+            assert(!Plane || (a[4][l] == 0.0 && a[5][l] == 0.0));
             done &= std::fabs(a[3][l]) + std::fabs(a[4][l]) + std::fabs(a[5][l]) <= tol[l];
+        }
         if (done) break;
         detail::jacobiRotate<Lanes, 0, 1, 3, 4, 5>(a, q);
-        detail::jacobiRotate<Lanes, 0, 2, 4, 3, 5>(a, q);
-        detail::jacobiRotate<Lanes, 1, 2, 5, 3, 4>(a, q);
+        if constexpr (!Plane) {
+            detail::jacobiRotate<Lanes, 0, 2, 4, 3, 5>(a, q);
+            detail::jacobiRotate<Lanes, 1, 2, 5, 3, 4>(a, q);
+        }
     }
 }
 

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -217,6 +219,38 @@ TEST(SymmetricEigen, BatchLaneIndependentOfNeighbours) {
     EXPECT_LE((fromEigen(q1[5], l1[5]) - fromEigen(q2[5], l2[5])).norm(), 1e-14 * target.norm());
     EXPECT_LE((l1[5] - l2[5]).cwiseAbs().maxCoeff(), 1e-14 * target.norm());
     EXPECT_EQ(q1[0], Mat3::Identity());
+}
+
+TEST(SymmetricEigen, PlaneStrainRotationIsBitIdenticalToFullSweeps) {
+    // Plane matrices (a02 = a12 = 0): the one (0, 1) rotation gives the bits of the full
+    // sweeps, including batches where some lanes are diagonal already and batches all diagonal.
+    std::mt19937_64 rng(24);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        alignas(64) double a[6][8] = {}, b[6][8] = {};
+        alignas(64) double qa[9][8], qb[9][8];
+        for (int l = 0; l < 8; ++l) {
+            const double scale = std::pow(10.0, 4.0 * u(rng));
+            a[0][l] = scale * (1.0 + 0.5 * u(rng));
+            a[1][l] = scale * (1.0 + 0.5 * u(rng));
+            a[2][l] = scale * (1.0 + 0.5 * u(rng));
+            const int kind = (trial + l) % 5;
+            a[3][l] = kind == 0 ? 0.0 : kind == 1 ? 1e-20 * scale : scale * 0.3 * u(rng);
+            if (trial % 7 == 0) a[3][l] = 0.0;      // the whole batch diagonal
+            if (trial % 11 == 0) a[1][l] = a[0][l]; // repeated eigenvalue
+        }
+        std::copy(&a[0][0], &a[0][0] + 48, &b[0][0]);
+        symmetricEigen3Lanes<8, false>(a, qa);
+        symmetricEigen3Lanes<8, true>(b, qb);
+        for (int k = 0; k < 6; ++k)
+            for (int l = 0; l < 8; ++l)
+                ASSERT_EQ(std::memcmp(&a[k][l], &b[k][l], sizeof(double)), 0)
+                    << "trial " << trial << ", a[" << k << "][" << l << "]";
+        for (int k = 0; k < 9; ++k)
+            for (int l = 0; l < 8; ++l)
+                ASSERT_EQ(std::memcmp(&qa[k][l], &qb[k][l], sizeof(double)), 0)
+                    << "trial " << trial << ", q[" << k << "][" << l << "]";
+    }
 }
 
 } // namespace
