@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -105,22 +107,24 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
         const double cells = std::floor(box.sizes()[d] / h) + 1.0;
         if (!(cells < 1e9)) throw std::invalid_argument("seedPoissonDisk: minDistance too small");
         n[d] = static_cast<int>(cells);
-        total *= cells;
+        total *= cells + 2 * reach;
     }
     if (!(total < 4e9)) throw std::invalid_argument("seedPoissonDisk: minDistance too small");
-    std::vector<std::int32_t> grid(static_cast<std::size_t>(total), -1); // point index per cell
+    // Point index per cell (-1: none), the box's cells padded by `reach` empty cells on every
+    // side, so that a neighbour look-up needs no bounds check.
+    std::vector<std::int32_t> grid(static_cast<std::size_t>(total), -1);
     std::vector<std::int32_t> active;
 
     const auto linear = [&n](const IVec<dim>& c) {
-        std::size_t i = 0;
+        std::ptrdiff_t i = 0;
         for (int d = dim - 1; d >= 0; --d)
-            i = i * static_cast<std::size_t>(n[d]) + c[d];
+            i = i * (n[d] + 2 * reach) + (c[d] + reach);
         return i;
     };
 
     // Neighbour cells that can hold a point within r of one in the centre cell: offsets o in
     // [-2, 2]^dim with sum_d max(|o_d| - 1, 0)^2 h^2 < r^2 = dim h^2, nearest first so that a
-    // rejected candidate is usually rejected early.
+    // rejected candidate is usually rejected early; as offsets in the padded grid.
     std::vector<IVec<dim>> offsets;
     forEachIndex<dim>(IVec<dim>::Constant(-reach), IVec<dim>::Constant(reach),
                       [&](const IVec<dim>& o) {
@@ -130,6 +134,10 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
     std::stable_sort(offsets.begin(), offsets.end(), [](const IVec<dim>& a, const IVec<dim>& b) {
         return a.squaredNorm() < b.squaredNorm();
     });
+    assert(offsets.front().isZero());
+    std::vector<std::ptrdiff_t> deltas;
+    for (std::size_t k = 1; k < offsets.size(); ++k)
+        deltas.push_back(linear(offsets[k]) - linear(IVec<dim>::Zero()));
 
     // Insert x if it is in the region and at least r from every point so far.
     const auto tryInsert = [&](const Vec<dim>& x) {
@@ -139,15 +147,15 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
             if (!(s >= 0.0 && s < n[d])) return false;
             c[d] = static_cast<int>(s);
         }
-        for (const IVec<dim>& o : offsets) {
-            const IVec<dim> nb = c + o;
-            if ((nb.array() < 0).any() || (nb.array() >= n.array()).any()) continue;
-            const std::int32_t j = grid[linear(nb)];
-            if (j >= 0 && (o.isZero() || (points[j] - x).squaredNorm() < r2)) return false;
+        const std::ptrdiff_t cell = linear(c);
+        if (grid[cell] >= 0) return false;
+        for (const std::ptrdiff_t delta : deltas) {
+            const std::int32_t j = grid[cell + delta];
+            if (j >= 0 && (points[j] - x).squaredNorm() < r2) return false;
         }
         if (!region.contains(x)) return false;
         const auto index = static_cast<std::int32_t>(points.size());
-        grid[linear(c)] = index;
+        grid[cell] = index;
         points.push_back(x);
         active.push_back(index);
         return true;
