@@ -3,7 +3,6 @@
 
 #include "core/Types.hpp"
 
-#include <cassert>
 #include <cmath>
 
 namespace mpm {
@@ -96,9 +95,9 @@ inline void jacobiRotate(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
 /// the same result as it would alone, whatever its neighbours (extra sweeps leave a converged
 /// lane unchanged to round-off only, so results are deterministic for a fixed batching).
 ///
-/// `Plane`: every lane has a02 = a12 = 0 (plane strain), so one rotation in the (0, 1) plane
-/// diagonalises it; the result is bit for bit that of the full sweeps, whose other rotations
-/// are then exact no-ops.
+/// `Plane` (2D updates): where every lane has a02 = a12 = 0 (plane strain), one rotation in the
+/// (0, 1) plane diagonalises the batch, bit for bit the result of the full sweeps, whose other
+/// rotations are then exact no-ops; a batch with any out-of-plane entry takes the full sweeps.
 template <int Lanes, bool Plane = false>
 void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]);
 
@@ -132,15 +131,17 @@ void symmetricEigen3Lanes(double (&a)[6][Lanes], double (&q)[9][Lanes]) {
         tol[l] = 1e-30 + 1e-16 * (std::fabs(a[0][l]) + std::fabs(a[1][l]) + std::fabs(a[2][l]) +
                                   std::fabs(a[3][l]) + std::fabs(a[4][l]) + std::fabs(a[5][l]));
     }
-    for (int sweep = 0; sweep < (Plane ? 1 : 12); ++sweep) {
+    bool plane = Plane;
+    if constexpr (Plane)
+        for (int l = 0; l < Lanes; ++l)
+            plane = plane && a[4][l] == 0.0 && a[5][l] == 0.0;
+    for (int sweep = 0; sweep < (plane ? 1 : 12); ++sweep) {
         bool done = true;
-        for (int l = 0; l < Lanes; ++l) {
-            assert(!Plane || (a[4][l] == 0.0 && a[5][l] == 0.0));
+        for (int l = 0; l < Lanes; ++l)
             done &= std::fabs(a[3][l]) + std::fabs(a[4][l]) + std::fabs(a[5][l]) <= tol[l];
-        }
         if (done) break;
         detail::jacobiRotate<Lanes, 0, 1, 3, 4, 5>(a, q);
-        if constexpr (!Plane) {
+        if (!plane) {
             detail::jacobiRotate<Lanes, 0, 2, 4, 3, 5>(a, q);
             detail::jacobiRotate<Lanes, 1, 2, 5, 3, 4>(a, q);
         }

@@ -61,7 +61,7 @@ template <int Lanes> struct HenckyBatch {
 #pragma omp simd
             for (int l = 0; l < Lanes; ++l)
                 a[k][l] = be[k][l];
-        symmetricEigen3Lanes<Lanes, dim == 2>(a, q); // plane strain: one rotation
+        symmetricEigen3Lanes<Lanes, dim == 2>(a, q); // plane bᵉ: one rotation
         for (int k = 0; k < 3; ++k)
 #pragma omp simd
             for (int l = 0; l < Lanes; ++l)

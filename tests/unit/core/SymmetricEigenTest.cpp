@@ -223,7 +223,8 @@ TEST(SymmetricEigen, BatchLaneIndependentOfNeighbours) {
 
 TEST(SymmetricEigen, PlaneStrainRotationIsBitIdenticalToFullSweeps) {
     // Plane matrices (a02 = a12 = 0): the one (0, 1) rotation gives the bits of the full
-    // sweeps, including batches where some lanes are diagonal already and batches all diagonal.
+    // sweeps, including batches where some lanes are diagonal already, batches all diagonal and
+    // batches with an out-of-plane entry (which take the full sweeps).
     std::mt19937_64 rng(24);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int trial = 0; trial < 200; ++trial) {
@@ -239,6 +240,7 @@ TEST(SymmetricEigen, PlaneStrainRotationIsBitIdenticalToFullSweeps) {
             if (trial % 7 == 0) a[3][l] = 0.0;      // the whole batch diagonal
             if (trial % 11 == 0) a[1][l] = a[0][l]; // repeated eigenvalue
         }
+        if (trial % 13 == 0) a[4][3] = 0.1 * a[0][3]; // not plane: the full sweeps
         std::copy(&a[0][0], &a[0][0] + 48, &b[0][0]);
         symmetricEigen3Lanes<8, false>(a, qa);
         symmetricEigen3Lanes<8, true>(b, qb);
