@@ -149,11 +149,9 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
 template <int dim> void BlockSort<dim>::visitOrder(std::vector<Index>& out) const {
     out.clear();
     out.reserve(order_.size());
-    for (const auto& blocks : colourBlocks_)
-        for (Index b : blocks) {
-            const Range r = particlesOf(b);
-            out.insert(out.end(), order_.begin() + r.begin, order_.begin() + r.end);
-        }
+    forEachBlockByColour(false, [&](Index, Range r) {
+        out.insert(out.end(), order_.begin() + r.begin, order_.begin() + r.end);
+    });
 }
 
 template <int dim>
