@@ -141,8 +141,9 @@ public:
         }
     }
 
-    /// The blocks of this step's material (sorted): zeroes the node fields of the last
-    /// active blocks and hands the pages of those the material has left back to the system.
+    /// The blocks of this step's material (sorted): zeroes their node fields (and the scratch
+    /// lines of those newly active) and hands the pages of the blocks the material has left
+    /// back to the system.
     void activate(std::vector<Index>&& blocks);
     const std::vector<Index>& activeBlocks() const {
         return active_;
