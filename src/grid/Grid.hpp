@@ -165,8 +165,9 @@ public:
     NodeArray<Vec<dim>> vOld;
     NodeArray<Vec<dim>> v;
     /// Scratch of the transfers, one cache line per node (P2G sums, G2P velocities): defined
-    /// only within one transfer phase, so activate does not zero it; its pages are released
-    /// with the blocks the material leaves, like the other fields'.
+    /// only within one transfer phase, so activate zeroes it only in newly active blocks (to
+    /// commit their pages by a write); its pages are released with the blocks the material
+    /// leaves, like the other fields'.
     NodeArray<NodeLine> lines;
 
 private:
