@@ -68,6 +68,13 @@ public:
     double strainEnergy(const Particles<dim>& p, Index i) const override {
         return Law::strainEnergy(c_, p, i);
     }
+    void strainEnergies(const Particles<dim>& p, const std::vector<Index>& ids,
+                        std::vector<double>& out) const override {
+        if constexpr (Law::batchedEnergy)
+            Law::template strainEnergies<dim>(c_, p, ids, out);
+        else
+            Material<dim>::strainEnergies(p, ids, out);
+    }
     /// ρ_c [kg/m³]; 0 for elastic materials and with transPhase: false.
     double criticalDensity() const override { return rhoC_; }
 

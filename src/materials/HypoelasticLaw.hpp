@@ -21,6 +21,8 @@ namespace mpm {
 /// members only).
 struct HypoelasticLaw {
     static constexpr ElasticLaw kind = ElasticLaw::hypoelastic;
+    /// The energy is a few products per point: ElastoPlastic uses the plain loop.
+    static constexpr bool batchedEnergy = false;
 
     /// σ = σ₀, bᵉ = 1 (not projected onto a yield surface: a σ₀ outside it returns in the first
     /// step).

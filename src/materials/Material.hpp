@@ -2,6 +2,7 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
+#include "core/Parallel.hpp"
 #include "core/Registry.hpp"
 #include "core/Types.hpp"
 #include "particles/Particles.hpp"
@@ -71,16 +72,31 @@ public:
     /// Stored elastic energy of particle i [J] (per metre of depth in 2D).
     virtual double strainEnergy(const Particles<dim>& p, Index i) const = 0;
 
+    /// strainEnergy of the particles `ids` into out[i] (out has an entry per particle): one
+    /// call per material, the particles in parallel. Models whose energy needs an
+    /// eigen-decomposition override it with a batched one.
+    virtual void strainEnergies(const Particles<dim>& p, const std::vector<Index>& ids,
+                                std::vector<double>& out) const {
+        const Index n = static_cast<Index>(ids.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index k = 0; k < n; ++k)
+            out[ids[k]] = strainEnergy(p, ids[k]);
+    }
+
     /// The stress is a rate form that never reads F: the volume then follows
     /// V ← V exp(Δt tr L) [002 Eq. 76], positive even in a step whose 1 + Δt L inverts (a point
     /// of a granular gas), and F is only written. False (the default): V = det F V⁰, and
     /// det F ≤ 0 stops the run.
-    virtual bool volumeFromRate() const { return false; }
+    virtual bool volumeFromRate() const {
+        return false;
+    }
 
     /// Trans-phase critical density ρ_c [kg/m³] [000 Eq. 10, 18–19]: a point whose current
     /// density ρ_p = m_p/V_p is below ρ_c is gasified (grains out of contact, bulk modulus 0):
     /// it carries no stress and takes no coupling contact force. 0 (the default): never.
-    virtual double criticalDensity() const { return 0.0; }
+    virtual double criticalDensity() const {
+        return 0.0;
+    }
 
     /// Build the material named `name` from its dictionary (`type:` picks the model).
     static std::unique_ptr<Material> create(const Dictionary& dict, const std::string& name);

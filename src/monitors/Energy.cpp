@@ -2,6 +2,7 @@
 #include "forces/BodyAcceleration.hpp"
 #include "monitors/FunctionObject.hpp"
 #include "solver/Reduce.hpp"
+#include "solver/StateMeasures.hpp"
 
 namespace mpm {
 
@@ -28,9 +29,7 @@ protected:
         const double kinetic = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
             return 0.5 * p.mass[i] * p.v[i].squaredNorm();
         });
-        const double strain = deterministicSum(static_cast<Index>(p.size()), [&](Index i) {
-            return s.materials[p.material[i]]->strainEnergy(p, i);
-        });
+        const double strain = totalStrainEnergy(p, s.materials);
         double bodyKinetic = 0;
         double sums[3] = {kinetic, strain, 0.0}; // this rank's points, then every rank's
         for (const auto& b : s.bodies)

@@ -19,6 +19,21 @@
 
 namespace mpm {
 
+/// Σ ψ V over the points [J]: each material's strainEnergies on its points (one call per
+/// material), summed in fixed chunks (the same bits for any thread count).
+template <int dim>
+double totalStrainEnergy(const Particles<dim>& p,
+                         const std::vector<std::unique_ptr<Material<dim>>>& materials) {
+    const Index n = static_cast<Index>(p.size());
+    std::vector<std::vector<Index>> ids(materials.size());
+    for (Index i = 0; i < n; ++i)
+        ids[p.material[i]].push_back(i);
+    std::vector<double> energy(p.size(), 0.0);
+    for (std::size_t m = 0; m < materials.size(); ++m)
+        if (!ids[m].empty()) materials[m]->strainEnergies(p, ids[m], energy);
+    return deterministicSum(n, [&](Index i) { return energy[i]; });
+}
+
 /// The largest point speed and body rim speed |v| + |ω| R [m/s] (bodies count for the CFL).
 template <int dim> double maxSpeed(const Particles<dim>& p, const BodySet<dim>& bodies) {
     const Index n = static_cast<Index>(p.size());
@@ -65,8 +80,7 @@ double energyBudget(const Particles<dim>& p,
     const Index n = static_cast<Index>(p.size());
     double sums[3] = {
         deterministicSum(n, [&](Index i) { return 0.5 * p.mass[i] * p.v[i].squaredNorm(); }),
-        deterministicSum(n, [&](Index i) { return materials[p.material[i]]->strainEnergy(p, i); }),
-        deterministicSum(n, [&](Index i) { return p.mass[i]; })};
+        totalStrainEnergy(p, materials), deterministicSum(n, [&](Index i) { return p.mass[i]; })};
     comm.sum(sums, 3);
     const double kinetic = sums[0], strain = sums[1], mass = sums[2];
     double budget = 0;
