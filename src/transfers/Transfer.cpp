@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 namespace mpm {
 
@@ -40,13 +41,24 @@ template <int dim, class K, bool Affine> class TransferImpl final : public Trans
     static constexpr int W = K::Width;
 
     /// Kernel data of one particle: coordinates of the first stencil node, 1D weights and
-    /// derivatives per axis, and the particle's offset from the first node in cell units.
-    struct Stencil {
+    /// derivatives per axis, and (APIC only, whose affine terms need it) the particle's offset
+    /// from the first node in cell units: 184 bytes a point in 3D with it, 160 without.
+    struct StencilWeights {
         int base[dim];
         double w[dim][W];
         double dw[dim][W];
+    };
+    struct StencilWithOffset : StencilWeights {
         Vec<dim> fx;
     };
+    using Stencil = std::conditional_t<Affine, StencilWithOffset, StencilWeights>;
+    /// fx_d of an APIC stencil; 0 for the others (the terms that use it are APIC's only).
+    static inline double offset(const Stencil& s, int d) {
+        if constexpr (Affine)
+            return s.fx[d];
+        else
+            return 0.0 * d;
+    }
 
 public:
     TransferImpl(K kernel, double ratio) : kernel_(kernel), ratio_(ratio) {}
@@ -63,7 +75,7 @@ public:
             const Vec<dim> xh = (p.x[i] - origin) * invH;
             for (int d = 0; d < dim; ++d) {
                 s.base[d] = kernel_.eval(xh[d], s.w[d], s.dw[d]);
-                s.fx[d] = xh[d] - s.base[d];
+                if constexpr (Affine) s.fx[d] = xh[d] - s.base[d];
             }
         }
     }
@@ -83,7 +95,7 @@ public:
     void scatterPointForces(const std::vector<Index>& ids, const std::vector<Vec<dim>>& f,
                             Grid<dim>& g) const override {
         for (std::size_t k = 0; k < ids.size(); ++k)
-            forStencil(st_[ids[k]], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
+            forStencil(st_[ids[k]], [&](Index node, double wgt, const Vec<dim>&) {
                 g.force[node] += wgt * f[k];
             });
     }
@@ -94,7 +106,7 @@ public:
         sort.forEachBlockByColour(worthThreads(static_cast<Index>(q.size())), [&](Index, auto r) {
             for (Index j = r.begin; j < r.end; ++j) {
                 const Index i = order[j];
-                forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
+                forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&) {
                     out[node] += wgt * q[i];
                 });
             }
@@ -107,9 +119,8 @@ public:
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index i = 0; i < n; ++i) {
             double sum = 0.0;
-            forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&, const Vec<dim>&) {
-                sum += wgt * q[node];
-            });
+            forStencil(st_[i],
+                       [&](Index node, double wgt, const Vec<dim>&) { sum += wgt * q[node]; });
             out[i] = sum;
         }
     }
@@ -121,7 +132,7 @@ public:
         for (Index i = 0; i < n; ++i) {
             const Stencil& s = st_[i];
             Mat<dim> L = Mat<dim>::Zero();
-            forStencil(s, [&](Index node, double, const Vec<dim>& grad, const Vec<dim>&) {
+            forStencil(s, [&](Index node, double, const Vec<dim>& grad) {
                 L.noalias() += g.vOld[node] * grad.transpose();
             });
             p.L[i] = L * invH;
@@ -150,13 +161,13 @@ private:
     static inline void forRows(const Stencil& s, const Index (&o)[dim][W], Row&& row) {
         if constexpr (dim == 2) {
             for (int b = 0; b < W; ++b)
-                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - s.fx[1], 0.0);
+                row(o[1][b], s.w[1][b], s.dw[1][b], 0.0, b - offset(s, 1), 0.0);
         } else {
             for (int c = 0; c < W; ++c) {
-                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - offset(s, 2);
                 for (int b = 0; b < W; ++b)
                     row(o[1][b] + o[2][c], s.w[1][b] * wz, s.dw[1][b] * wz, s.w[1][b] * dz,
-                        b - s.fx[1], oz);
+                        b - offset(s, 1), oz);
             }
         }
     }
@@ -219,30 +230,27 @@ private:
                 L.col(d) = vec(*aL[d]);
     }
 
-    /// Visit the stencil of one particle as nested loops (x fastest):
-    /// fn(node, w_ip, ∇w_ip·h, (x_i - x_p)/h).
+    /// Visit the stencil of one particle as nested loops (x fastest): fn(node, w_ip, ∇w_ip·h).
     template <class Fn> inline void forStencil(const Stencil& s, Fn&& fn) const {
         Index o[dim][W];
         offsets(s, o);
         if constexpr (dim == 2) {
             for (int b = 0; b < W; ++b) {
                 const Index row = o[1][b];
-                const double wy = s.w[1][b], dy = s.dw[1][b], oy = b - s.fx[1];
+                const double wy = s.w[1][b], dy = s.dw[1][b];
                 for (int a = 0; a < W; ++a)
-                    fn(row + o[0][a], s.w[0][a] * wy, Vec<dim>(s.dw[0][a] * wy, s.w[0][a] * dy),
-                       Vec<dim>(a - s.fx[0], oy));
+                    fn(row + o[0][a], s.w[0][a] * wy, Vec<dim>(s.dw[0][a] * wy, s.w[0][a] * dy));
             }
         } else {
             for (int c = 0; c < W; ++c) {
-                const double wz = s.w[2][c], dz = s.dw[2][c], oz = c - s.fx[2];
+                const double wz = s.w[2][c], dz = s.dw[2][c];
                 for (int b = 0; b < W; ++b) {
                     const Index row = o[1][b] + o[2][c];
                     const double wyz = s.w[1][b] * wz, dyz = s.dw[1][b] * wz;
-                    const double wdz = s.w[1][b] * dz, oy = b - s.fx[1];
+                    const double wdz = s.w[1][b] * dz;
                     for (int a = 0; a < W; ++a) {
                         const double wx = s.w[0][a];
-                        fn(row + o[0][a], wx * wyz, Vec<dim>(s.dw[0][a] * wyz, wx * dyz, wx * wdz),
-                           Vec<dim>(a - s.fx[0], oy, oz));
+                        fn(row + o[0][a], wx * wyz, Vec<dim>(s.dw[0][a] * wyz, wx * dyz, wx * wdz));
                     }
                 }
             }
@@ -263,7 +271,8 @@ private:
         const Double4 zero = {0.0, 0.0, 0.0, 0.0};
         Double4 P = zero, Q[3] = {zero, zero, zero}, T[3] = {zero, zero, zero};
         if constexpr (Momentum) {
-            const Vec<dim> p0 = Affine ? Vec<dim>(mv - s.fx[0] * mC.col(0)) : mv;
+            Vec<dim> p0 = mv;
+            if constexpr (Affine) p0 -= s.fx[0] * mC.col(0);
             P = Double4{m, at(p0, 0), at(p0, 1), at(p0, 2)};
             if constexpr (Affine)
                 for (int d = 0; d < dim; ++d)
