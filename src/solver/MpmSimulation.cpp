@@ -632,7 +632,8 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     os << std::defaultfloat << std::setprecision(4) << "Sparse grid: " << active << " of "
        << grid_.numBlocks() << " blocks active (" << 100.0 * active / grid_.numBlocks() << " %), "
        << active * Grid<dim>::NodesPerBlock * nodeBytes / 1048576.0 << " MiB of node fields ("
-       << nodeBytes << " B per node); particle state " << particleBytes << " B per particle\n";
+       << nodeBytes << " B per node); particle state " << particleBytes
+       << " B per particle, kernel stencils " << transfer_->stencilBytes() << " B per particle\n";
     const double pups = timer_.updatesPerSecond(total);
     os << std::defaultfloat << std::setprecision(4) << "Particle-updates per second: " << pups
        << " (" << pups / 1e6 << " M)\n";

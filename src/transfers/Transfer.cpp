@@ -146,6 +146,10 @@ public:
         return flip ? gatherImpl<false, true>(p, g, dt) : gatherImpl<false, false>(p, g, dt);
     }
 
+    std::size_t stencilBytes() const override {
+        return sizeof(Stencil);
+    }
+
 private:
     /// Node-index offsets of the stencil along each axis: node (a, b, c) of the stencil is
     /// o[0][a] + o[1][b] + o[2][c] (Grid::axisOffset).

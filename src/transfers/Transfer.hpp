@@ -62,6 +62,10 @@ public:
     /// grid's velocities through its scratch lines (Grid::lines), which it overwrites.
     virtual GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt, bool withGradient) = 0;
 
+    /// Bytes of kernel data kept per particle between computeWeights and the last transfer of
+    /// the step (the stencil: first node, weights, gradients; APIC adds the offset).
+    virtual std::size_t stencilBytes() const = 0;
+
     /// Build the transfer selected in system/mpmSchemes; `particleHalfWidth` is GIMP's l_p / h.
     static std::unique_ptr<Transfer> create(const Dictionary& schemes, double particleHalfWidth);
 };
