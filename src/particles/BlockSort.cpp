@@ -19,10 +19,8 @@ template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
     const int passes = (bits + 15) / 16;
     const int digitBits = (bits + passes - 1) / passes;
     const std::uint32_t buckets = 1u << digitBits;
-    const Index n = static_cast<Index>(block_.size());
-    order_.resize(n);
+    const Index n = static_cast<Index>(key_.size());
     orderTmp_.resize(n);
-    key_.resize(n);
     keyTmp_.resize(n);
     const bool threads = worthThreads(n);
     counts_.assign(static_cast<std::size_t>(omp_get_max_threads()) * buckets, 0);
@@ -31,10 +29,6 @@ template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
         const int team = omp_get_num_threads(), t = omp_get_thread_num();
         const Index lo = n * t / team, hi = n * (t + 1) / team; // this thread's slice
         Index* count = counts_.data() + static_cast<std::size_t>(t) * buckets;
-        for (Index i = lo; i < hi; ++i) {
-            order_[i] = i;
-            key_[i] = static_cast<std::uint32_t>(block_[i]);
-        }
         for (int pass = 0; pass < passes; ++pass) {
             const int shift = digitBits * pass;
             std::fill(count, count + buckets, 0);
@@ -70,24 +64,27 @@ template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
 template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const Grid<dim>& grid) {
     const Index n = static_cast<Index>(p.size());
     const Index nb = grid.numBlocks();
-    block_.resize(n);
+    if (nb > std::numeric_limits<std::int32_t>::max())
+        throw std::length_error("BlockSort: more than 2³¹ blocks");
+    // The sort's keys in storage order (its first pass starts from the identity order).
+    key_.resize(n);
+    order_.resize(n);
     Index firstOutside = n;
     const Vec<dim> origin = grid.origin();
     const double invH = grid.invH();
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : firstOutside)
     for (Index i = 0; i < n; ++i) {
         const Vec<dim> xh = (p.x[i] - origin) * invH;
+        order_[i] = i;
         if (!grid.insideArrays(xh)) {
             firstOutside = std::min(firstOutside, i);
-            block_[i] = 0;
+            key_[i] = 0;
         } else {
-            block_[i] = grid.blockOf(xh);
+            key_[i] = static_cast<std::uint32_t>(grid.blockOf(xh));
         }
     }
     if (firstOutside < n) return firstOutside;
     if (static_cast<Index>(slot_.size()) != nb) {
-        if (nb > std::numeric_limits<std::int32_t>::max())
-            throw std::length_error("BlockSort: more than 2³¹ blocks");
         slot_.assign(nb, -1);
         active_.assign(nb, 0);
         blocks_.clear();

@@ -77,14 +77,14 @@ public:
     }
 
 private:
-    /// order_ = the particles stably sorted by block_: LSD radix sort of ≤ 16 bits a pass, each
-    /// pass a counting sort over the threads' slices (the same order for any thread count).
+    /// order_ = the particles stably sorted by their block (key_, with order_ the identity, on
+    /// entry): LSD radix sort of ≤ 16 bits a pass, each pass a counting sort over the threads'
+    /// slices (the same order for any thread count).
     void sortByBlock(Index numBlocks);
 
-    std::vector<Index> block_; ///< block of each particle
     std::vector<Index> order_;
     std::vector<Index> orderTmp_;
-    std::vector<std::uint32_t> key_, keyTmp_; ///< block_ in order_ (the sort's keys)
+    std::vector<std::uint32_t> key_, keyTmp_; ///< the block of each particle of order_
     std::vector<Index> counts_;               ///< the radix passes' counts, per thread
     std::vector<Index> blocks_;               ///< occupied blocks, ascending
     std::vector<Index> begin_;       ///< begin_[k]: first position of blocks_[k]; begin_.back() = n
