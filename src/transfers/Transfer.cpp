@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <type_traits>
@@ -63,21 +64,14 @@ template <int dim, class K, bool Affine> class TransferImpl final : public Trans
 public:
     TransferImpl(K kernel, double ratio) : kernel_(kernel), ratio_(ratio) {}
 
+    /// The stencils are evaluated where they are first needed: by the step's first scatter,
+    /// each point's in P2G's own pass over it (one pass over the points fewer), or, should
+    /// another transfer come first, by ensureWeights.
     void computeWeights(const Particles<dim>& p, const Grid<dim>& g) override {
         grid_ = &g;
-        const Index n = static_cast<Index>(p.size());
-        st_.resize(n);
-        const Vec<dim> origin = g.origin();
-        const double invH = g.invH();
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-        for (Index i = 0; i < n; ++i) {
-            Stencil& s = st_[i];
-            const Vec<dim> xh = (p.x[i] - origin) * invH;
-            for (int d = 0; d < dim; ++d) {
-                s.base[d] = kernel_.eval(xh[d], s.w[d], s.dw[d]);
-                if constexpr (Affine) s.fx[d] = xh[d] - s.base[d];
-            }
-        }
+        points_ = &p;
+        st_.resize(p.size());
+        pending_ = true;
     }
 
     void scatter(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& sort,
@@ -94,6 +88,7 @@ public:
 
     void scatterPointForces(const std::vector<Index>& ids, const std::vector<Vec<dim>>& f,
                             Grid<dim>& g) const override {
+        ensureWeights();
         for (std::size_t k = 0; k < ids.size(); ++k)
             forStencil(st_[ids[k]], [&](Index node, double wgt, const Vec<dim>&) {
                 g.force[node] += wgt * f[k];
@@ -102,6 +97,7 @@ public:
 
     void scatterScalar(const std::vector<double>& q, NodeArray<double>& out,
                        const BlockSort<dim>& sort) const override {
+        ensureWeights();
         const auto& order = sort.order();
         sort.forEachBlockByColour(worthThreads(static_cast<Index>(q.size())), [&](Index, auto r) {
             for (Index j = r.begin; j < r.end; ++j) {
@@ -114,6 +110,7 @@ public:
     }
 
     void gatherScalar(const NodeArray<double>& q, std::vector<double>& out) const override {
+        ensureWeights();
         const Index n = static_cast<Index>(st_.size());
         out.resize(n);
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
@@ -126,6 +123,7 @@ public:
     }
 
     void velocityGradient(Particles<dim>& p, const Grid<dim>& g) override {
+        ensureWeights();
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
@@ -140,6 +138,7 @@ public:
     }
 
     GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt, bool withGradient) override {
+        ensureWeights();
         const bool flip = !Affine && ratio_ > 0.0;
         if (withGradient)
             return flip ? gatherImpl<true, true>(p, g, dt) : gatherImpl<true, false>(p, g, dt);
@@ -151,6 +150,25 @@ public:
     }
 
 private:
+    /// The stencil of point i at its x^n (computeWeights' points and grid).
+    inline void evaluate(Index i) const {
+        Stencil& s = st_[i];
+        const Vec<dim> xh = (points_->x[i] - grid_->origin()) * grid_->invH();
+        for (int d = 0; d < dim; ++d) {
+            s.base[d] = kernel_.eval(xh[d], s.w[d], s.dw[d]);
+            if constexpr (Affine) s.fx[d] = xh[d] - s.base[d];
+        }
+    }
+    /// Every stencil, if no scatter has evaluated them yet this step.
+    void ensureWeights() const {
+        if (!pending_) return;
+        pending_ = false;
+        const Index n = static_cast<Index>(st_.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index i = 0; i < n; ++i)
+            evaluate(i);
+    }
+
     /// Node-index offsets of the stencil along each axis: node (a, b, c) of the stencil is
     /// o[0][a] + o[1][b] + o[2][c] (Grid::axisOffset).
     inline void offsets(const Stencil& s, Index (&o)[dim][W]) const {
@@ -325,9 +343,13 @@ private:
         const double invH = g.invH();
         const auto& order = sort.order();
         NodeLine* lines = g.lines.data();
+        assert(&p == points_ && "scatter of other points than computeWeights'");
+        const bool evaluateFirst = pending_; // this scatter evaluates the stencils
+        pending_ = false;
         sort.forEachBlockByColour(worthThreads(static_cast<Index>(p.size())), [&](Index, auto r) {
             for (Index j = r.begin; j < r.end; ++j) {
                 const Index i = order[j];
+                if (evaluateFirst) evaluate(i);
                 const double m = p.mass[i];
                 Mat<dim> mC = Mat<dim>::Zero();
                 if constexpr (Affine) mC = (m * h) * p.C[i];
@@ -400,8 +422,10 @@ private:
 
     K kernel_;
     double ratio_;
-    std::vector<Stencil> st_;
-    const Grid<dim>* grid_ = nullptr; ///< the node numbering (axisOffset) of computeWeights
+    mutable std::vector<Stencil> st_;
+    const Grid<dim>* grid_ = nullptr;        ///< the node numbering (axisOffset) of computeWeights
+    const Particles<dim>* points_ = nullptr; ///< the points of computeWeights (their x^n)
+    mutable bool pending_ = false;           ///< st_ not yet evaluated for this step
 };
 
 /// APIC needs a kernel with constant inertia D_p (quadratic or cubic B-spline).

@@ -447,6 +447,36 @@ TEST(Transfer, ScatterBitIdenticalForOneAndTwoThreads3D) {
     checkScatterDeterministic<3>(2 * ParallelThreshold);
 }
 
+/// The stencils evaluated by the step's first scatter (in P2G's own pass) and those evaluated on
+/// demand by a transfer that comes first: the same bits (gatherScalar of one nodal field).
+template <int dim> void checkStencilsEvaluatedWhereFirstNeeded() {
+    for (const Scheme& s : allSchemes()) {
+        SCOPED_TRACE(s.kernel + " " + s.transfer);
+        Grid<dim> g(gridDict<dim>());
+        const Particles<dim> p = randomParticles(g, 2 * ParallelThreshold, 17, false);
+        NodeArray<double> q(g.numNodes());
+        for (Index k = 0; k < g.numNodes(); ++k)
+            q[k] = std::sin(0.37 * k) + 0.01 * k;
+        auto t1 = makeTransfer<dim>(s), t2 = makeTransfer<dim>(s);
+        BlockSort<dim> sort;
+        p2g(*t1, p, g, sort, true); // the scatter evaluates
+        std::vector<double> a, b;
+        t1->gatherScalar(q, a);
+        t2->computeWeights(p, g); // gatherScalar evaluates
+        t2->gatherScalar(q, b);
+        ASSERT_EQ(a.size(), p.size());
+        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
+    }
+}
+
+TEST(Transfer, StencilsEvaluatedWhereFirstNeeded2D) {
+    checkStencilsEvaluatedWhereFirstNeeded<2>();
+}
+
+TEST(Transfer, StencilsEvaluatedWhereFirstNeeded3D) {
+    checkStencilsEvaluatedWhereFirstNeeded<3>();
+}
+
 TEST(Transfer, ScatterForceMatchesCombinedScatter) {
     // USF's separate force scatter adds the same force as USL's combined pass. The internal
     // force sums to zero (Σ ∇w = 0) and has no moment (Σ x_i ⊗ ∇w = 1 and σ is symmetric).
