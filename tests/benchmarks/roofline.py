@@ -47,16 +47,18 @@ def phase_model(dim, plastic, sweeps, activeNodes, massNodes, plasticShare):
     d = dim
     vec, mat = 8 * d, 8 * d * d
     stencil = 8 + 2 * 8 * 3 * d + 8 * d  # node0, w and dw (3 per axis), fx
-    # --- sort: BlockSort::update (xh per particle; counting sort over block_ and order_),
-    # computeWeights (xh, per axis floor, fx, a b c, 3 weights, 2 derivatives, fx again), and
-    # every ReorderInterval = 20 steps Particles::permute of every field + a second update.
+    # --- sort: BlockSort::update (xh per particle into the radix keys; one counting-sort pass:
+    # count, then place key_ and order_), and every ReorderInterval = 20 steps
+    # Particles::permute of every field + a second update. (Since 2026-11-27 the kernel
+    # weights are evaluated in P2G's pass, below.)
     sortFlop = 2 * d  # xh = (x - origin) / h
-    sortBytes = vec + 2 * 8 + 8 + 8 + 2 * 8  # x; block_ w+wa; count; block_ read, order_ w+wa
+    # x; key_ (4 B) and order_ w+wa; the count reads key_; the placing reads key_ and order_
+    # and writes their copies (w+wa)
+    sortBytes = vec + 2 * 4 + 2 * 8 + 4 + (4 + 8) + 2 * (4 + 8)
     weightFlop = 2 * d + d * (1 + 1 + 3 + 6 + 1 + 1)
-    weightBytes = vec + 2 * stencil
     fb, nfields = field_bytes(d)
     permuteBytes = 3 * fb + 8 * nfields + sortBytes + 2 * 8  # + materialParticles_ lists
-    sort = (sortFlop + weightFlop + sortFlop / 20, sortBytes + weightBytes + permuteBytes / 20)
+    sort = (sortFlop + sortFlop / 20, sortBytes + permuteBytes / 20)
     # --- P2G: grid clear (mass + 4 vectors per active node, write-allocate), then per
     # particle m v, m h C, -V σ/h and the 27 (9) node updates, each node of the stencils
     # read and written once (mass, momentum, force).
@@ -70,8 +72,10 @@ def phase_model(dim, plastic, sweeps, activeNodes, massNodes, plasticShare):
         # forStencil: per row oy 1; per node wgt 1, grad 2, offset 1; mass 2, momentum
         # (mC offset 6, + mv 2, × wgt 2, += 2) 12, force (S grad 6, += 2) 8.
         p2gFlop = (2 + 5 + 5) + 3 * 1 + 9 * (4 + 2 + 12 + 8)
-    p2gBytes = 8 + 8 + vec + mat + 8 + 72 + stencil  # order, mass, v, C, volume, stress, stencil
-    p2g = (p2gFlop, p2gBytes + clearBytes * activeNodes + 2 * (8 + 2 * vec) * massNodes)
+    # order, mass, v, C, volume, stress; x, and the stencil it evaluates (weightFlop) w+wa
+    p2gBytes = 8 + 8 + vec + mat + 8 + 72 + vec + 2 * stencil
+    p2g = (p2gFlop + weightFlop,
+           p2gBytes + clearBytes * activeNodes + 2 * (8 + 2 * vec) * massNodes)
     # --- grid: per active node the mass is read; per node with mass v0 = p/m (d ÷),
     # f = force + m g (2d), v = v0 + (Δt/m) f (1 ÷ + 2d); read p, force, write vOld, v.
     grid = ((d + 2 * d + 1 + 2 * d) * massNodes, 8 * activeNodes + 4 * vec * massNodes)

@@ -5,7 +5,7 @@
 #     form, read/copy/triad against the known array values) and prints one ROOFLINE line per
 #     thread count with positive figures; bad options are refused with exit 2 and a message.
 #  2. roofline.py: the phase model's totals are the hand counts of docs/benchmarks.md, and a
-#     synthetic log (10⁷ particle-steps, P2G 1.061 s) gives P2G exactly 10.00 GFLOP/s.
+#     synthetic log (10⁷ particle-steps, P2G 1.106 s) gives P2G exactly 10.00 GFLOP/s.
 #  3. run.sh: three runs of a small case give a RESULT line with min <= median <= max and a
 #     peak memory; bad options and a missing case are refused with exit 2.
 #  4. phaseStats.py / yieldShare.py on a 2D block at rest of 4 × 4 cells, 4 points per cell,
@@ -50,25 +50,25 @@ done
 
 # 2. roofline.py: hand counts and a synthetic log.
 $py "$root/tests/benchmarks/roofline.py" --model-table >"$work/model" 2>&1
-for row in "block3D | P2G | 1061 |" "block3D | G2P | 994 |" "block2D | P2G | 249 |" \
-    "block2D | G2P | 260 |" "block3D | sort | 51 | 525 |" "block3D | P2G | 1061 | 473 |"; do
+for row in "block3D | P2G | 1106 |" "block3D | G2P | 994 |" "block2D | P2G | 279 |" \
+    "block2D | G2P | 260 |" "block3D | sort | 6 | 166 |" "block3D | P2G | 1106 | 673 |"; do
     if grep -qF "| $row" "$work/model"; then ok "model: $row"; else bad "model row '$row'"; fi
 done
 cat >"$work/log" <<'EOF'
 Phase timing (100 steps, 100000 particles, 2 threads):
     sort               0.100 s    2.0 %
-    P2G                1.061 s   20.0 %
+    P2G                1.106 s   20.0 %
     grid               0.010 s    0.2 %
     G2P                0.994 s   20.0 %
     constitutive       1.000 s   20.0 %
     functions          0.000 s    0.0 %
     IO                 0.000 s    0.0 %
-    total              3.165 s  100.0 %
+    total              3.210 s  100.0 %
 Particle-updates per second: 3e+06 (3 M)
 EOF
 if $py "$root/tests/benchmarks/roofline.py" --probe "$work/probe" --run "block3D=$work/log" \
     --out "$work/chart.png" >"$work/table" 2>&1 &&
-    grep -qF "| block3D | P2G | 106.1 | 2.24 | 10.00 |" "$work/table" &&
+    grep -qF "| block3D | P2G | 110.6 | 1.64 | 10.00 |" "$work/table" &&
     grep -qF "| block3D | G2P | 99.4 | 1.74 | 10.00 |" "$work/table" && [ -s "$work/chart.png" ]; then
     ok "roofline.py: P2G and G2P at 10.00 GFLOP/s from the synthetic log, chart written"
 else
