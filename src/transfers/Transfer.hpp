@@ -28,8 +28,9 @@ public:
     virtual ~Transfer() = default;
 
     /// Kernel weights and gradients of every particle at its present position, for all
-    /// transfers of the step (p and g must outlive them). Evaluated once, where first needed:
-    /// the step's first scatter evaluates each point's stencil in its own pass over the point.
+    /// transfers of the step (p and g must outlive them, and x must not change before the
+    /// first of them). Evaluated once, where first needed: the step's first scatter evaluates
+    /// each point's stencil in its own pass over the point.
     virtual void computeWeights(const Particles<dim>& p, const Grid<dim>& g) = 0;
 
     /// P2G of mass and momentum [000 Eq. 13] (APIC adds the affine term m_p C_p (x_i - x_p))
