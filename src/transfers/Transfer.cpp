@@ -54,11 +54,11 @@ template <int dim, class K, bool Affine> class TransferImpl final : public Trans
     };
     using Stencil = std::conditional_t<Affine, StencilWithOffset, StencilWeights>;
     /// fx_d of an APIC stencil; 0 for the others (the terms that use it are APIC's only).
-    static inline double offset(const Stencil& s, int d) {
+    static inline double offset([[maybe_unused]] const Stencil& s, [[maybe_unused]] int d) {
         if constexpr (Affine)
             return s.fx[d];
         else
-            return 0.0 * d;
+            return 0.0;
     }
 
 public:
@@ -344,22 +344,29 @@ private:
         const auto& order = sort.order();
         NodeLine* lines = g.lines.data();
         assert(&p == points_ && "scatter of other points than computeWeights'");
-        const bool evaluateFirst = pending_; // this scatter evaluates the stencils
+        // The step's first scatter evaluates the stencils (chosen once, not per point).
+        auto scatterAll = [&](auto evaluateFirst) {
+            sort.forEachBlockByColour(worthThreads(static_cast<Index>(p.size())), [&](Index,
+                                                                                      auto r) {
+                for (Index j = r.begin; j < r.end; ++j) {
+                    const Index i = order[j];
+                    if constexpr (decltype(evaluateFirst)::value) evaluate(i);
+                    const double m = p.mass[i];
+                    Mat<dim> mC = Mat<dim>::Zero();
+                    if constexpr (Affine) mC = (m * h) * p.C[i];
+                    Mat<dim> stressTerm = Mat<dim>::Zero();
+                    if constexpr (Stress)
+                        stressTerm =
+                            (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
+                    scatterOne<Momentum, Stress>(st_[i], lines, m, m * p.v[i], mC, stressTerm);
+                }
+            });
+        };
+        if (pending_)
+            scatterAll(std::true_type{});
+        else
+            scatterAll(std::false_type{});
         pending_ = false;
-        sort.forEachBlockByColour(worthThreads(static_cast<Index>(p.size())), [&](Index, auto r) {
-            for (Index j = r.begin; j < r.end; ++j) {
-                const Index i = order[j];
-                if (evaluateFirst) evaluate(i);
-                const double m = p.mass[i];
-                Mat<dim> mC = Mat<dim>::Zero();
-                if constexpr (Affine) mC = (m * h) * p.C[i];
-                Mat<dim> stressTerm = Mat<dim>::Zero();
-                if constexpr (Stress)
-                    stressTerm =
-                        (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
-                scatterOne<Momentum, Stress>(st_[i], lines, m, m * p.v[i], mC, stressTerm);
-            }
-        });
         forActiveLines(g, [&g](Index n, const NodeLine& q) {
             if constexpr (Momentum) {
                 g.mass[n] += q.v[0];
