@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/FastMath.hpp"
 #include "core/SymmetricEigen.hpp"
+#include "core/SymmetricSeries.hpp"
 #include "materials/Material.hpp"
 
 #include <algorithm>
@@ -11,16 +13,14 @@ namespace mpm {
 
 /// Lanes particles of a Hencky update in structure-of-arrays form, so that every step of the
 /// update vectorises across particles (DESIGN §7): the trial bᵉ = f bᵉ fᵀ (f = 1 + Δt L), its
-/// eigen-decomposition Q diag(λ) Qᵀ, and the way back from principal values to tensors.
+/// Hencky strain ε = ½ ln bᵉ and the stress τ(ε)/J, all as tensors.
 /// Symmetric tensors are kept as their six entries (00 11 22 01 02 12).
 template <int Lanes> struct HenckyBatch {
-    Index idx[Lanes];                 ///< the particles; a short last batch repeats its last one
-    alignas(64) double be[6][Lanes];  ///< trial bᵉ
-    alignas(64) double lam[3][Lanes]; ///< its eigenvalues
-    alignas(64) double q[9][Lanes];   ///< its eigenvectors, q[3 i + j] = Q_ij
-    alignas(64) double jInv[Lanes];   ///< 1/J = V⁰/V
+    Index idx[Lanes];                ///< the particles; a short last batch repeats its last one
+    alignas(64) double be[6][Lanes]; ///< trial bᵉ
+    alignas(64) double jInv[Lanes];  ///< 1/J = V⁰/V
 
-    /// Load ids[first …] (at most Lanes of them), form the trial bᵉ and decompose it.
+    /// Load ids[first …] (at most Lanes of them) and form the trial bᵉ.
     template <int dim>
     void trial(const Particles<dim>& p, const std::vector<Index>& ids, Index first, double dt) {
         const Index n = static_cast<Index>(ids.size());
@@ -56,29 +56,42 @@ template <int Lanes> struct HenckyBatch {
             be[0][l] = mft(0, 0), be[1][l] = mft(1, 1), be[2][l] = mft(2, 2);
             be[3][l] = mft(0, 1), be[4][l] = mft(0, 2), be[5][l] = mft(1, 2);
         }
-        alignas(64) double a[6][Lanes];
+    }
+
+    /// The trial Hencky strain ε = ½ ln bᵉ: by the artanh series (halfLogLanes) for the usual
+    /// elastic strains, or, in a batch with a stretch beyond its range, by the Jacobi
+    /// decomposition bᵉ = Q diag(λ) Qᵀ, ε = Q diag(½ ln λ) Qᵀ. Both are accurate to round-off.
+    template <int dim> void strain(double (&eps)[6][Lanes]) const {
+        constexpr bool plane = dim == 2;
+        if (halfLogLanes<Lanes, plane>(be, eps)) return;
+        alignas(64) double a[6][Lanes], q[9][Lanes];
         for (int k = 0; k < 6; ++k)
 #pragma omp simd
             for (int l = 0; l < Lanes; ++l)
                 a[k][l] = be[k][l];
-        symmetricEigen3Lanes<Lanes, dim == 2>(a, q); // plane bᵉ: one rotation
-        for (int k = 0; k < 3; ++k)
-#pragma omp simd
-            for (int l = 0; l < Lanes; ++l)
-                lam[k][l] = a[k][l];
-    }
-
-    /// out = Q diag(d) Qᵀ, lane by lane: out_ij = Σ_k Q_ik Q_jk d_k.
-    void fromPrincipal(const double (&d)[3][Lanes], double (&out)[6][Lanes]) const {
+        symmetricEigen3Lanes<Lanes, plane>(a, q); // plane bᵉ: one rotation
 #pragma omp simd
         for (int l = 0; l < Lanes; ++l) {
+            const double d[3] = {0.5 * fastLog(a[0][l]), 0.5 * fastLog(a[1][l]),
+                                 0.5 * fastLog(a[2][l])};
             auto qdq = [&](int r, int s) {
-                return q[3 * r][l] * q[3 * s][l] * d[0][l] +
-                       q[3 * r + 1][l] * q[3 * s + 1][l] * d[1][l] +
-                       q[3 * r + 2][l] * q[3 * s + 2][l] * d[2][l];
+                return q[3 * r][l] * q[3 * s][l] * d[0] + q[3 * r + 1][l] * q[3 * s + 1][l] * d[1] +
+                       q[3 * r + 2][l] * q[3 * s + 2][l] * d[2];
             };
-            out[0][l] = qdq(0, 0), out[1][l] = qdq(1, 1), out[2][l] = qdq(2, 2);
-            out[3][l] = qdq(0, 1), out[4][l] = qdq(0, 2), out[5][l] = qdq(1, 2);
+            eps[0][l] = qdq(0, 0), eps[1][l] = qdq(1, 1), eps[2][l] = qdq(2, 2);
+            eps[3][l] = qdq(0, 1), eps[4][l] = qdq(0, 2), eps[5][l] = qdq(1, 2);
+        }
+    }
+
+    /// σ = τ/J = (λ tr ε 1 + 2G ε)/J [000 Eq. 4–5] of every lane (one expression for the
+    /// elastic and the plastic updates, so that both give the same bits for an elastic point).
+    void stress(double lambda, double twoG, const double (&eps)[6][Lanes],
+                double (&sig)[6][Lanes]) const {
+#pragma omp simd
+        for (int l = 0; l < Lanes; ++l) {
+            const double tr = eps[0][l] + eps[1][l] + eps[2][l], iso = lambda * tr;
+            for (int k = 0; k < 6; ++k)
+                sig[k][l] = ((k < 3 ? iso : 0.0) + twoG * eps[k][l]) * jInv[l];
         }
     }
 
@@ -89,12 +102,5 @@ template <int Lanes> struct HenckyBatch {
         return m;
     }
 };
-
-/// Principal Kirchhoff stress over J, τ_k/J = (λ tr ε + 2G ε_k)/J [000 Eq. 4–5], for the
-/// principal Hencky strains e (one expression shared by the elastic and plastic updates, so
-/// that both give the same bits for an elastic point).
-inline double principalStress(double lambda, double twoG, double trace, double ek, double jInv) {
-    return (lambda * trace + twoG * ek) * jInv;
-}
 
 } // namespace mpm

@@ -20,7 +20,8 @@ namespace mpm {
 /// Hencky hyperelasticity in the elastic left Cauchy–Green tensor bᵉ [000 Eq. 4–5]:
 ///   ψ = ½ λ (ln Jᵉ)² + G tr(εᵉ²),  εᵉ = ½ ln bᵉ,  τ = 2bᵉ ∂ψ/∂bᵉ = λ tr(εᵉ) 1 + 2G εᵉ,  σ = τ/J.
 /// bᵉ is advanced by the incremental deformation f = 1 + Δt L: bᵉ ← f bᵉ fᵀ; plastic flow, if
-/// any, by the return map in principal logarithmic strain of HenckyReturnMap.hpp.
+/// any, by the return map in logarithmic strain of HenckyReturnMap.hpp. ε is found without an
+/// eigen-decomposition for the usual elastic strains (HenckyBatch::strain).
 /// An elastic-law policy of ElastoPlastic (static members only).
 struct HenckyLaw {
     static constexpr ElasticLaw kind = ElasticLaw::hencky;
@@ -109,19 +110,9 @@ struct HenckyLaw {
         for (Index b = 0; b < batches; ++b) {
             HenckyBatch<Lanes> h;
             h.trial(p, ids, b * Lanes, dt);
-            // ε = ½ ln bᵉ in principal axes; σ = τ/J.
-            alignas(64) double tau[3][Lanes], sig[6][Lanes];
-#pragma omp simd
-            for (int l = 0; l < Lanes; ++l) {
-                const double e0 = 0.5 * fastLog(h.lam[0][l]);
-                const double e1 = 0.5 * fastLog(h.lam[1][l]);
-                const double e2 = 0.5 * fastLog(h.lam[2][l]);
-                const double tr = e0 + e1 + e2;
-                tau[0][l] = principalStress(lambda, twoG, tr, e0, h.jInv[l]);
-                tau[1][l] = principalStress(lambda, twoG, tr, e1, h.jInv[l]);
-                tau[2][l] = principalStress(lambda, twoG, tr, e2, h.jInv[l]);
-            }
-            h.fromPrincipal(tau, sig);
+            alignas(64) double eps[6][Lanes], sig[6][Lanes];
+            h.template strain<dim>(eps);
+            h.stress(lambda, twoG, eps, sig);
             for (int l = 0; l < Lanes; ++l) {
                 if (b * Lanes + l >= n) break;
                 const Index i = h.idx[l];

@@ -15,9 +15,11 @@
 // Cohesionless granular plasticity on Hencky elasticity (HenckyLaw with DruckerPragerFlow or
 // MuIFlow, FlowRules.hpp).
 //
-// Return map in principal logarithmic strain (multiplicative plasticity, F = Fᵉ Fᵖ [000 Eq. 3]).
-// bᵉ_tr = f bᵉ fᵀ, f = 1 + Δt L, is decomposed as Q diag(λ) Qᵀ; ε = ½ ln λ is the trial elastic
-// Hencky strain, coaxial with the Kirchhoff stress τ (isotropy). With ε_v = tr ε,
+// Return map in logarithmic strain (multiplicative plasticity, F = Fᵉ Fᵖ [000 Eq. 3]).
+// bᵉ_tr = f bᵉ fᵀ, f = 1 + Δt L; ε = ½ ln bᵉ_tr is the trial elastic Hencky strain, coaxial with
+// the Kirchhoff stress τ (isotropy). Everything below is isotropic in ε, so the return is done
+// on the tensors themselves (ε by a series, bᵉ = exp 2ε by another: SymmetricSeries.hpp), with
+// no eigen-decomposition for the usual strains. With ε_v = tr ε,
 // ε̂ = ε − (ε_v/3) 1 and n = ε̂/|ε̂| [000 Eq. 4–5]:
 //   τ = λ ε_v 1 + 2G ε = K ε_v 1 + 2G ε̂,   p = −K ε_v,   s = 2G ε̂,   q = √½ |s| = √2 G |ε̂|,
 // and the yield function is F = q − μ p [000 Eq. 6] (homogeneous of degree one in the stress, so
@@ -26,8 +28,8 @@
 // Flow rule: potential g = q − β p (β = μ of the dilation angle ψ by [000 Eq. 8]; β = 0 is
 // isochoric flow, β = μ associated flow). With ∂q/∂τ = s/(√2|s|) = n/√2 and ∂p/∂τ = −1/3,
 //   Δεᵖ = Δγ ∂g/∂τ = Δγ (n/√2 + (β/3) 1).
-// The exponential map of multiplicative plasticity (bᵉ = exp 2ε) makes the return additive in
-// the trial principal axes, ε = ε_tr − Δεᵖ:
+// The exponential map of multiplicative plasticity (bᵉ = exp 2ε) makes the return additive
+// (ε, ε_tr and Δεᵖ are coaxial), ε = ε_tr − Δεᵖ:
 //   |ε̂| = |ε̂_tr| − Δγ/√2,   ε_v = ε_v,tr − β Δγ,   i.e.  q = q_tr − G Δγ,  p = p_tr + K β Δγ.
 // Δγ = √2 |Δε̂ᵖ| is the engineering plastic shear strain (simple shear: the plastic shear angle),
 // work-conjugate to q (s : Δε̂ᵖ = q Δγ); Particles::plasticStrain accumulates it.
@@ -59,10 +61,10 @@ namespace mpm {
 /// Advance bᵉ, σ and the plastic strain of `ids` over dt by the return map above with the
 /// yield/flow functor `Flow` (chosen at compile time: no per-particle virtual call or option
 /// branch). Flow provides `beta` and `multiplier(q, p, jInv)`. Particles go through in batches of
-/// 8 so that the eigen-decompositions and the return vectorise across particles, as in
-/// HenckyLaw::elasticUpdate. ρ_c = 0 turns the trans-phase relation off. Elastic points get
-/// exactly HenckyLaw::elasticUpdate's bᵉ. Returns the first particle whose state is not finite, or
-/// -1.
+/// 8 so that the strains, the return and exp 2ε (only in a batch with a plastic point) vectorise
+/// across particles, as in HenckyLaw::elasticUpdate. ρ_c = 0 turns the trans-phase relation off.
+/// Elastic points get exactly HenckyLaw::elasticUpdate's bᵉ and σ. Returns the first particle
+/// whose state is not finite, or -1.
 template <int dim, class Flow>
 Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
                             const ElasticConstants& c, double rhoC, const Flow& flow) {
@@ -80,16 +82,17 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
         alignas(64) double rho[Lanes]; // m/V [kg/m³], for the trans-phase relation
         for (int l = 0; l < Lanes; ++l)
             rho[l] = p.mass[h.idx[l]] / p.volume[h.idx[l]];
-        alignas(64) double tau[3][Lanes], lamNew[3][Lanes], dGamma[Lanes];
+        alignas(64) double eps[6][Lanes], twoEps[6][Lanes], dGamma[Lanes];
         alignas(64) double state[Lanes]; // 0: elastic (trial bᵉ), 1: plastic, 2: stress-free
+        h.template strain<dim>(eps);
 #pragma omp simd
         for (int l = 0; l < Lanes; ++l) {
-            const double e0 = 0.5 * fastLog(h.lam[0][l]);
-            const double e1 = 0.5 * fastLog(h.lam[1][l]);
-            const double e2 = 0.5 * fastLog(h.lam[2][l]);
-            const double ev = e0 + e1 + e2, evThird = ev / 3.0;
-            const double d0 = e0 - evThird, d1 = e1 - evThird, d2 = e2 - evThird;
-            const double dn = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+            const double ev = eps[0][l] + eps[1][l] + eps[2][l], evThird = ev / 3.0;
+            const double d0 = eps[0][l] - evThird, d1 = eps[1][l] - evThird;
+            const double d2 = eps[2][l] - evThird;
+            const double dn = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2 +
+                                        2.0 * (eps[3][l] * eps[3][l] + eps[4][l] * eps[4][l] +
+                                               eps[5][l] * eps[5][l])); // |ε̂|
             const double q = sqrt2G * dn, pk = -K * ev;
             const double m = flow.multiplier(q, pk, jInv[l]);
             const double dg = m > 0.0 ? m : 0.0;
@@ -97,29 +100,25 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
             const bool gas = rho[l] < rhoC;
             // Apex region ε_v ≥ √2 β |ε̂_tr| (see above; ε_v ≥ 0 for β = 0).
             const bool stressFree = gas | (ev >= sqrt2 * flow.beta * dn);
-            // ε = ε_v/3 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
+            // ε = ε_v/3 1 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
             const double ratio = 1.0 - dg / (sqrt2 * (dn > 1e-300 ? dn : 1e-300));
             const double evNewThird = (ev - flow.beta * dg) / 3.0;
-            double n0 = plastic ? evNewThird + ratio * d0 : e0;
-            double n1 = plastic ? evNewThird + ratio * d1 : e1;
-            double n2 = plastic ? evNewThird + ratio * d2 : e2;
-            n0 = stressFree ? 0.0 : n0;
-            n1 = stressFree ? 0.0 : n1;
-            n2 = stressFree ? 0.0 : n2;
-            // τ = λ tr ε 1 + 2G ε [000 Eq. 4–5]; σ = τ/J with J = V/V⁰.
-            const double trn = n0 + n1 + n2;
-            tau[0][l] = principalStress(lambda, twoG, trn, n0, jInv[l]);
-            tau[1][l] = principalStress(lambda, twoG, trn, n1, jInv[l]);
-            tau[2][l] = principalStress(lambda, twoG, trn, n2, jInv[l]);
-            lamNew[0][l] = fastExp(2.0 * n0);
-            lamNew[1][l] = fastExp(2.0 * n1);
-            lamNew[2][l] = fastExp(2.0 * n2);
+            const double dev[6] = {d0, d1, d2, eps[3][l], eps[4][l], eps[5][l]};
+            for (int k = 0; k < 6; ++k) {
+                double e = plastic ? (k < 3 ? evNewThird : 0.0) + ratio * dev[k] : eps[k][l];
+                e = stressFree ? 0.0 : e;
+                eps[k][l] = e;
+                twoEps[k][l] = 2.0 * e;
+            }
             dGamma[l] = stressFree ? (gas ? 0.0 : sqrt2 * dn) : dg;
             state[l] = stressFree ? 2.0 : (plastic ? 1.0 : 0.0);
         }
+        bool anyPlastic = false;
+        for (int l = 0; l < Lanes; ++l)
+            anyPlastic = anyPlastic || state[l] == 1.0;
         alignas(64) double beNew[6][Lanes], sig[6][Lanes];
-        h.fromPrincipal(lamNew, beNew);
-        h.fromPrincipal(tau, sig);
+        h.stress(lambda, twoG, eps, sig);
+        if (anyPlastic) expLanes<Lanes, dim == 2>(twoEps, beNew); // bᵉ = exp 2ε
         for (int l = 0; l < Lanes; ++l) {
             if (b * Lanes + l >= n) break;
             const Index i = h.idx[l];
@@ -131,11 +130,12 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
                 p.stress[i] = HenckyBatch<Lanes>::tensor(sig, l);
             }
             p.plasticStrain[i] += dGamma[l];
-            // The trial eigenvalues catch a non-finite L also where the point ends stress-free
-            // (summed from the lanes, not re-read from the tensors just stored).
-            if (!std::isfinite(h.lam[0][l] + h.lam[1][l] + h.lam[2][l] + dGamma[l] + sig[0][l] +
-                               sig[1][l] + sig[2][l] + sig[3][l] + sig[4][l] + sig[5][l]))
-                bad = std::min(bad, b * Lanes + l);
+            // The trial bᵉ catches a non-finite L also where the point ends stress-free (summed
+            // from the lanes, not re-read from the tensors just stored).
+            double sum = dGamma[l];
+            for (int k = 0; k < 6; ++k)
+                sum += h.be[k][l] + sig[k][l];
+            if (!std::isfinite(sum)) bad = std::min(bad, b * Lanes + l);
         }
     }
     return bad < n ? ids[bad] : -1;
