@@ -103,13 +103,20 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
             // ε = ε_v/3 1 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
             const double ratio = 1.0 - dg / (sqrt2 * (dn > 1e-300 ? dn : 1e-300));
             const double evNewThird = (ev - flow.beta * dg) / 3.0;
-            const double dev[6] = {d0, d1, d2, eps[3][l], eps[4][l], eps[5][l]};
-            for (int k = 0; k < 6; ++k) {
-                double e = plastic ? (k < 3 ? evNewThird : 0.0) + ratio * dev[k] : eps[k][l];
+            // Entry k of the new ε from its deviatoric part dk (written out, not looped: the lane
+            // loop stays free of control flow and vectorises).
+            auto set = [&](int k, double iso, double dk) {
+                double e = plastic ? iso + ratio * dk : eps[k][l];
                 e = stressFree ? 0.0 : e;
                 eps[k][l] = e;
                 twoEps[k][l] = 2.0 * e;
-            }
+            };
+            set(0, evNewThird, d0);
+            set(1, evNewThird, d1);
+            set(2, evNewThird, d2);
+            set(3, 0.0, eps[3][l]);
+            set(4, 0.0, eps[4][l]);
+            set(5, 0.0, eps[5][l]);
             dGamma[l] = stressFree ? (gas ? 0.0 : sqrt2 * dn) : dg;
             state[l] = stressFree ? 2.0 : (plastic ? 1.0 : 0.0);
         }
