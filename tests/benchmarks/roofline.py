@@ -40,7 +40,7 @@ def field_bytes(dim):
     return 8 + 4 + vec + mat3 + 8 + 8 + 8 + 8 + mat + mat3 + mat + mat + vec, 13
 
 
-def phase_model(dim, plastic, sweeps, activeNodes, massNodes, plasticShare):
+def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNodes):
     """{phase: (FLOP, bytes)} per particle-step for the quadratic B-spline, APIC, USL, Hencky
     (plastic: Drucker–Prager return map) step of src/transfers/Transfer.cpp,
     src/particles/BlockSort.cpp, src/materials/HenckyLaw.hpp / HenckyReturnMap.hpp."""
@@ -91,33 +91,39 @@ def phase_model(dim, plastic, sweeps, activeNodes, massNodes, plasticShare):
     g2pBytes = stencil + 2 * vec + 2 * vec + 2 * mat + 2 * mat + 8  # x rw; v, C, L w+wa; mass
     g2p = (g2pFlop, g2pBytes + vec * massNodes)
     # --- constitutive: Particles::updateDeformation (F ← (1 + Δt L) F, V = det F V⁰), then
-    # the Hencky update of 8-particle batches: f = 1 + Δt L (3×3) 12, b = f b fᵀ 90, the Jacobi
-    # tolerance 7 and per sweep 3 rotations × 45 + the convergence test 2, ε = ½ ln λ
-    # (fastLog 30 + 1) × 3; elastic: τ 9, × V⁰/V 4, Q τ Qᵀ 54, finite check 8; plastic
-    # (HenckyReturnMap.hpp): V⁰/V, m/V 2, the lane block (ε_v, ε̂, |ε̂|, q, p, Δγ, apex test,
-    # ratio, returned ε, τ: 46) + 3 fastExp (32, with the 2× 33), Q λ Qᵀ for bᵉ of points on the cone 54, Q τ Qᵀ 54, Δγ 1, finite check 12.
+    # the Hencky update of 8-particle batches (since 2026-11-27 without eigen-decomposition,
+    # SymmetricSeries.hpp): f = 1 + Δt L (3×3) 12, b = f b fᵀ 90; ε = ½ ln b = artanh Z:
+    # X = b − 1 and 2 + X 6, cofactors 18, det 5, ÷ 1, inverse 6, Z and Z² (2 products), |Z|²
+    # 12, logTerms Horner steps (a product + 3), ε = Z S (a product), a product of commuting
+    # symmetric tensors being 30 (plane: 10); σ = (λ tr ε 1 + 2G ε)/J 21; elastic: finite check
+    # 6; plastic (HenckyReturnMap.hpp): V⁰/V, m/V 2, the lane block (ε_v, ε̂, |ε̂|, q, p, Δγ,
+    # ratio, the returned ε and 2ε: 51), in the expShare of batches with a plastic point
+    # bᵉ = exp 2ε (|2ε|² 12, expTerms Horner steps of 6 + a product + 3), Δγ 1, finite check 13.
     defFlop = (d * d + d + (2 * d * d * d - d * d) + (14 if d == 3 else 3) + 1)
     defBytes = mat + 2 * mat + 4 + 8 + 2 * 8  # L, F rw, material, volume0, volume w+wa
-    eigenFlop = 7 + sweeps * (3 * 45 + 2) + 3 * (30 + 1)
+    product = 30 if d == 3 else 10
+    logFlop = 6 + 18 + 5 + 1 + 6 + 2 * product + 12 + logTerms * (product + 3) + product
     if plastic:
-        lane = 46 + 3 * 33  # the SIMD lane loop but the three logarithms
-        consFlop = 12 + 90 + 2 + eigenFlop + lane + 54 * plasticShare + 54 + 1 + 12
+        expFlop = expShare * (12 + expTerms * (6 + product + 3))
+        consFlop = 12 + 90 + 2 + logFlop + 51 + 21 + expFlop + 1 + 13
         consBytes = 8 + mat + 2 * 72 + 8 + 8 + 8 + 2 * 72 + 2 * 8  # ids L be V⁰ V m σ εp
     else:
-        consFlop = 12 + 90 + eigenFlop + 9 + 4 + 54 + 8
+        consFlop = 12 + 90 + logFlop + 21 + 6
         consBytes = 8 + mat + 2 * 72 + 8 + 8 + 2 * 72  # ids, L, be rw, V⁰, V, σ w+wa
     cons = (defFlop + consFlop, defBytes + consBytes)
     return {"sort": sort, "P2G": p2g, "grid": grid, "G2P": g2p, "constitutive": cons}
 
 
-# Case inputs of the model (tests/benchmarks/phaseStats.py on a run of each case, 2 threads).
+# Case inputs of the model (tests/benchmarks/phaseStats.py on a run of each case, 2 threads;
+# the series' mean terms per batch and the share of batches with a plastic point counted on
+# one run of each case, 2026-11-27).
 CASES = {
-    "block3D": dict(dim=3, plastic=False, sweeps=3.005, activeNodes=0.4091, massNodes=0.1759,
-                    plasticShare=0.0),
-    "block3DPlastic": dict(dim=3, plastic=True, sweeps=2.967, activeNodes=0.4091,
-                           massNodes=0.1761, plasticShare=0.888),
-    "block2D": dict(dim=2, plastic=False, sweeps=0.733, activeNodes=0.2781, massNodes=0.2569,
-                    plasticShare=0.0),
+    "block3D": dict(dim=3, plastic=False, logTerms=1.618, expShare=0.0, expTerms=0.0,
+                    activeNodes=0.4091, massNodes=0.1759),
+    "block3DPlastic": dict(dim=3, plastic=True, logTerms=1.384, expShare=0.875, expTerms=4.458,
+                           activeNodes=0.4091, massNodes=0.1761),
+    "block2D": dict(dim=2, plastic=False, logTerms=1.279, expShare=0.0, expTerms=0.0,
+                    activeNodes=0.2781, massNodes=0.2569),
 }
 PHASES = ["sort", "P2G", "grid", "G2P", "constitutive"]
 
