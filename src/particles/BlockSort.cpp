@@ -10,7 +10,7 @@
 
 namespace mpm {
 
-template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
+template <int dim> bool BlockSort<dim>::sortByBlock(Index numBlocks) {
     // Passes of at most 16 bits (a count array of ≤ 65 536 entries a thread, in L2): one pass
     // up to 65 536 blocks, two up to 2³², each a stable counting sort.
     int bits = 1;
@@ -24,6 +24,7 @@ template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
     keyTmp_.resize(n);
     const bool threads = worthThreads(n);
     counts_.assign(static_cast<std::size_t>(omp_get_max_threads()) * buckets, 0);
+    digitBegin_.resize(buckets + 1);
 #pragma omp parallel if (threads)
     {
         const int team = omp_get_num_threads(), t = omp_get_thread_num();
@@ -38,13 +39,16 @@ template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
 #pragma omp single
             { // exclusive prefix in (digit, slice) order: the sort is stable for any team
                 Index sum = 0;
-                for (std::uint32_t d = 0; d < buckets; ++d)
+                for (std::uint32_t d = 0; d < buckets; ++d) {
+                    digitBegin_[d] = sum;
                     for (int u = 0; u < team; ++u) {
                         Index& c = counts_[static_cast<std::size_t>(u) * buckets + d];
                         const Index k = c;
                         c = sum;
                         sum += k;
                     }
+                }
+                digitBegin_[buckets] = sum;
             }
             for (Index j = lo; j < hi; ++j) {
                 const Index to = count[(key_[j] >> shift) & (buckets - 1)]++;
@@ -59,6 +63,7 @@ template <int dim> void BlockSort<dim>::sortByBlock(Index numBlocks) {
             }
         }
     }
+    return passes == 1;
 }
 
 template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const Grid<dim>& grid) {
@@ -90,7 +95,7 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
         blocks_.clear();
         activeNodeBlocks_.clear();
     }
-    sortByBlock(nb);
+    const bool onePass = sortByBlock(nb);
 
     // The occupied blocks and their ranges; last step's entries of the per-block index are
     // forgotten one by one (no pass over the box).
@@ -98,13 +103,17 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
         slot_[b] = -1;
     blocks_.clear();
     begin_.clear();
-    for (Index j = 0; j < n; ++j) {
-        const Index b = key_[j];
-        if (j == 0 || b != blocks_.back()) {
-            slot_[b] = static_cast<std::int32_t>(blocks_.size());
-            blocks_.push_back(b);
-            begin_.push_back(j);
-        }
+    auto occupied = [&](Index b, Index first) {
+        slot_[b] = static_cast<std::int32_t>(blocks_.size());
+        blocks_.push_back(b);
+        begin_.push_back(first);
+    };
+    if (onePass) { // from the sort's digit counts: a pass over the blocks, not the particles
+        for (Index b = 0; b < nb; ++b)
+            if (digitBegin_[b + 1] > digitBegin_[b]) occupied(b, digitBegin_[b]);
+    } else {
+        for (Index j = 0; j < n; ++j)
+            if (j == 0 || key_[j] != key_[j - 1]) occupied(key_[j], j);
     }
     begin_.push_back(n);
 

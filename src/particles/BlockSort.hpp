@@ -80,13 +80,16 @@ private:
     /// order_ = the particles stably sorted by their block (key_, with order_ the identity, on
     /// entry): LSD radix sort of ≤ 16 bits a pass, each pass a counting sort over the threads'
     /// slices (the same order for any thread count).
-    void sortByBlock(Index numBlocks);
+    /// Stable radix sort of key_ (with order_) by block; true if it took one pass, whose
+    /// digits are then the blocks and digitBegin_ their first positions.
+    bool sortByBlock(Index numBlocks);
 
     std::vector<Index> order_;
     std::vector<Index> orderTmp_;
     std::vector<std::uint32_t> key_, keyTmp_; ///< the block of each particle of order_
     std::vector<Index> counts_;               ///< the radix passes' counts, per thread
-    std::vector<Index> blocks_;               ///< occupied blocks, ascending
+    std::vector<Index> digitBegin_;  ///< the last pass's first position of each digit (+ n)
+    std::vector<Index> blocks_;      ///< occupied blocks, ascending
     std::vector<Index> begin_;       ///< begin_[k]: first position of blocks_[k]; begin_.back() = n
     std::vector<std::int32_t> slot_; ///< per block of the box: k in blocks_, or -1
     std::vector<Index> colourBlocks_[NumColours];
