@@ -354,9 +354,9 @@ TEST(BlockSort, SameColourBlocksShareNoStencilNode3D) {
 }
 
 TEST(BlockSort, ReusedSortEqualsAFreshOneAndCountingSort) {
-    // 5832 blocks: the radix sort takes two passes. A sort updated first with other particles
-    // (the per-block index forgotten entry by entry) gives what a fresh sort and a counting
-    // sort over every block give.
+    // 5832 blocks: one radix pass, whose digit counts give the block ranges. A sort updated
+    // first with other particles (the per-block index forgotten entry by entry) gives what a
+    // fresh sort and a counting sort over every block give.
     const Grid<3> g(parse("bounds: {min: [0, 0, 0], max: [1, 1, 1]}\ncellSize: 0.015625\n"));
     ASSERT_GT(g.numBlocks(), 2048);
     const Particles<3> a = randomParticles(g, 4000, 5);
@@ -405,6 +405,16 @@ TEST(BlockSort, SortIsTheStableCountingSortForAnyThreadCount) {
         BlockSort<3> sort;
         ASSERT_EQ(sort.update(p, g), -1);
         EXPECT_EQ(sort.order(), expected) << t << " threads";
+        // The block ranges of the two-pass sort (found from the sorted keys).
+        Index pos = 0;
+        for (Index blk = 0; blk < g.numBlocks(); ++blk) {
+            const auto r = sort.particlesOf(blk);
+            ASSERT_EQ(r.end - r.begin, static_cast<Index>(byBlock[blk].size())) << blk;
+            if (byBlock[blk].empty()) continue;
+            ASSERT_EQ(r.begin, pos) << blk;
+            pos = r.end;
+        }
+        EXPECT_EQ(pos, static_cast<Index>(p.size()));
     }
     omp_set_num_threads(threads);
 }
