@@ -353,6 +353,23 @@ TEST(BlockSort, SameColourBlocksShareNoStencilNode3D) {
     checkColouring(g, 3000, 2);
 }
 
+/// The sort's range of every block holds the particles of byBlock[block] (each list in storage
+/// order), the blocks one after the other in ascending order.
+template <int dim>
+void expectBlockRanges(const BlockSort<dim>& sort, const std::vector<std::vector<Index>>& byBlock) {
+    Index pos = 0;
+    for (Index blk = 0; blk < static_cast<Index>(byBlock.size()); ++blk) {
+        const auto r = sort.particlesOf(blk);
+        ASSERT_EQ(r.end - r.begin, static_cast<Index>(byBlock[blk].size())) << blk;
+        if (byBlock[blk].empty()) continue;
+        ASSERT_EQ(r.begin, pos) << blk;
+        for (Index j = r.begin; j < r.end; ++j)
+            ASSERT_EQ(sort.order()[j], byBlock[blk][j - r.begin]);
+        pos = r.end;
+    }
+    EXPECT_EQ(pos, static_cast<Index>(sort.order().size()));
+}
+
 TEST(BlockSort, ReusedSortEqualsAFreshOneAndCountingSort) {
     // 5832 blocks: one radix pass, whose digit counts give the block ranges. A sort updated
     // first with other particles (the per-block index forgotten entry by entry) gives what a
@@ -375,17 +392,7 @@ TEST(BlockSort, ReusedSortEqualsAFreshOneAndCountingSort) {
     std::vector<std::vector<Index>> byBlock(g.numBlocks());
     for (Index i = 0; i < static_cast<Index>(b.size()); ++i)
         byBlock[g.blockOf((b.x[i] - g.origin()) * g.invH())].push_back(i);
-    Index pos = 0;
-    for (Index blk = 0; blk < g.numBlocks(); ++blk) {
-        const auto r = reused.particlesOf(blk);
-        ASSERT_EQ(r.end - r.begin, static_cast<Index>(byBlock[blk].size())) << blk;
-        if (byBlock[blk].empty()) continue;
-        ASSERT_EQ(r.begin, pos) << blk;
-        for (Index j = r.begin; j < r.end; ++j)
-            ASSERT_EQ(reused.order()[j], byBlock[blk][j - r.begin]);
-        pos = r.end;
-    }
-    EXPECT_EQ(pos, static_cast<Index>(b.size()));
+    expectBlockRanges(reused, byBlock);
 }
 
 TEST(BlockSort, SortIsTheStableCountingSortForAnyThreadCount) {
@@ -405,16 +412,7 @@ TEST(BlockSort, SortIsTheStableCountingSortForAnyThreadCount) {
         BlockSort<3> sort;
         ASSERT_EQ(sort.update(p, g), -1);
         EXPECT_EQ(sort.order(), expected) << t << " threads";
-        // The block ranges of the two-pass sort (found from the sorted keys).
-        Index pos = 0;
-        for (Index blk = 0; blk < g.numBlocks(); ++blk) {
-            const auto r = sort.particlesOf(blk);
-            ASSERT_EQ(r.end - r.begin, static_cast<Index>(byBlock[blk].size())) << blk;
-            if (byBlock[blk].empty()) continue;
-            ASSERT_EQ(r.begin, pos) << blk;
-            pos = r.end;
-        }
-        EXPECT_EQ(pos, static_cast<Index>(p.size()));
+        expectBlockRanges(sort, byBlock); // the two-pass sort's, found from the sorted keys
     }
     omp_set_num_threads(threads);
 }
