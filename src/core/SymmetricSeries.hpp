@@ -45,6 +45,14 @@ template <int Lanes> inline void storeSym(double (&s)[6][Lanes], int l, const Sy
     s[0][l] = v.xx, s[1][l] = v.yy, s[2][l] = v.zz, s[3][l] = v.xy, s[4][l] = v.xz, s[5][l] = v.yz;
 }
 
+/// Every lane has xz = yz = 0.
+template <int Lanes> inline bool isPlane(const double (&s)[6][Lanes]) {
+    bool plane = true;
+    for (int l = 0; l < Lanes; ++l)
+        plane = plane && s[4][l] == 0.0 && s[5][l] == 0.0;
+    return plane;
+}
+
 /// |A|² = A : A, the squared Frobenius norm (at least the squared spectral radius).
 inline double squaredNorm(const Sym3& a) {
     return a.xx * a.xx + a.yy * a.yy + a.zz * a.zz +
@@ -72,9 +80,12 @@ inline int artanhTerms(double r2) {
 /// terms of artanhTerms for the batch's largest |Z|². Z is formed from b − 1, so a small strain
 /// keeps its relative accuracy (the eigenvalues of b itself carry an absolute round-off of
 /// 10⁻¹⁶). Returns false, eps unset, when some lane has |Z|² > HalfLogMaxSquaredNorm (or is not
-/// finite): the caller decomposes that batch instead. `Plane`: every b has xz = yz = 0.
+/// finite): the caller decomposes that batch instead. `Plane`: plane strain is expected
+/// (xz = yz = 0, the cheaper products); a batch with an out-of-plane entry takes the full ones.
 template <int Lanes, bool Plane>
 bool halfLogLanes(const double (&b)[6][Lanes], double (&eps)[6][Lanes]) {
+    if constexpr (Plane)
+        if (!isPlane(b)) return halfLogLanes<Lanes, false>(b, eps);
     alignas(64) double z[6][Lanes], z2[6][Lanes], r2[Lanes];
 #pragma omp simd
     for (int l = 0; l < Lanes; ++l) {
@@ -123,9 +134,11 @@ bool halfLogLanes(const double (&b)[6][Lanes], double (&eps)[6][Lanes]) {
 /// exp A of `Lanes` symmetric tensors by scaling and squaring: the Taylor series
 /// Σ_{k=0..K} (A/2ˢ)ᵏ/k! (Horner), squared s times, with s the fewest halvings that bring the
 /// batch's largest |A| to ½ or below and K the fewest terms whose remainder,
-/// at most rᴷ⁺¹ eʳ/(K+1)! for r = |A|/2ˢ, is below 2⁻⁵³. `Plane`: every A has xz = yz = 0.
+/// at most rᴷ⁺¹ eʳ/(K+1)! for r = |A|/2ˢ, is below 2⁻⁵³. `Plane`: as for halfLogLanes.
 template <int Lanes, bool Plane>
 void expLanes(const double (&a)[6][Lanes], double (&out)[6][Lanes]) {
+    if constexpr (Plane)
+        if (!isPlane(a)) return expLanes<Lanes, false>(a, out);
     double r2max = 0.0;
     for (int l = 0; l < Lanes; ++l)
         r2max = std::max(r2max, squaredNorm(loadSym(a, l)));

@@ -126,6 +126,24 @@ TEST(SymmetricSeries, HalfLogRefusesLargeStretchAndNonFinite) {
     EXPECT_FALSE((halfLogLanes<L, false>(b, eps)));
 }
 
+TEST(SymmetricSeries, PlaneVariantsTakeTheFullProductsForOutOfPlaneEntries) {
+    // A plane-strain batch with one lane out of plane: the full products, the same bits.
+    std::mt19937_64 rng(6);
+    alignas(64) double b[6][L], e1[6][L], e2[6][L], x1[6][L], x2[6][L];
+    for (int l = 0; l < L; ++l)
+        toLanes(randomB(rng, 0.03, l != 5), b, l);
+    ASSERT_NE(b[4][5], 0.0);
+    ASSERT_TRUE((halfLogLanes<L, true>(b, e1)));
+    ASSERT_TRUE((halfLogLanes<L, false>(b, e2)));
+    expLanes<L, true>(e1, x1);
+    expLanes<L, false>(e2, x2);
+    for (int k = 0; k < 6; ++k)
+        for (int l = 0; l < L; ++l) {
+            EXPECT_EQ(e1[k][l], e2[k][l]);
+            EXPECT_EQ(x1[k][l], x2[k][l]);
+        }
+}
+
 TEST(SymmetricSeries, ArtanhTermsGrowWithTheNorm) {
     EXPECT_EQ(artanhTerms(0.0), 0);
     EXPECT_EQ(artanhTerms(1e-4), 3);
