@@ -4,7 +4,8 @@
 #  1. 200 steps on 1, 2 ranks (bisection), 3 (hierarchical) and 4 (simple) against the serial run: the
 #     same points, positions within 1e-10 of the box, the sphere's state (body forces summed over
 #     the ranks) within 1e-10 relative; ParaView's parallel reader opens the .pvtu of every time;
-#     bodies in contact with each other (tests/cases/bodyContact2D) on 2 ranks as in serial;
+#     bodies in contact with each other (tests/cases/bodyContact2D) on 2 ranks as in serial
+#     (within 1e-9: contact onsets amplify the round-off of the summation order);
 #     periodic faces cut by the decomposition (periodicBox2D, periodicBody2D), velocity
 #     constraints and F-bar (velocityConstraint2D, restart3D) on 3 ranks; unilateral walls
 #     under USF resumed from the processor directories bit-identical (slipWalls2D);
@@ -110,13 +111,18 @@ mpi 2 "$bin/mpmFoam" -case "$work/np2bodies" -parallel > "$work/np2bodies/log" 2
 import glob, os, sys
 import numpy as np
 work = sys.argv[1]
-s, p = (np.loadtxt(glob.glob(os.path.join(work, c, "postProcessing/bodies/*/bodies.dat"))[0])
-        for c in ("serialBodies", "np2bodies"))
-# Each column against its own largest value (1e-6 of the table's for pure rounding noise).
+files = [glob.glob(os.path.join(work, c, "postProcessing/bodies/*/bodies.dat"))[0]
+         for c in ("serialBodies", "np2bodies")]
+s, p = (np.loadtxt(f) for f in files)
+# Each column against its own largest value (1e-6 of the table's for pure rounding noise),
+# within 1e-9: the summation order (serial against 2 ranks) leaves ~1e-12 in every column, and
+# the contacts' onsets amplify it 10-100 fold (measured: 2e-11 in the states and 3.4e-11 in
+# disk_Fx at t = 0.058 s with 563fb3d; 7e-11 and 2.9e-10 after the Hencky series changed the
+# round-off). A decomposition error (a force counted twice or lost) is O(1).
 scale = np.maximum(np.abs(s).max(axis=0), 1e-6 * np.abs(s).max())
 err = (np.abs(s - p) / scale).max() if s.shape == p.shape else np.inf
 print("bodyContact2D np2: body states (%d rows) max relative difference %.2e" % (len(s), err))
-if err > 1e-10:
+if err > 1e-9:
     sys.exit("FAIL: bodyContact2D body states differ by %.2e" % err)
 PY
 
