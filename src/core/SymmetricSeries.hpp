@@ -9,7 +9,9 @@
 // 00 11 22 01 02 12). Every function of one tensor commutes with it, so each product below is
 // of two commuting symmetric tensors and is itself symmetric: only its upper triangle is formed.
 // No eigen-decomposition, no branch per lane: the lane loops vectorise, and the number of terms
-// is chosen once per batch from the largest norm in it.
+// is chosen once per batch from the largest norm in it (so a lane's last bit may depend on the
+// batch it shares; batches follow the material lists, the same for any thread count and after
+// a restart; terms per lane cost 10 %: docs/benchmarks.md).
 //
 // Cost against the batched Jacobi of SymmetricEigen.hpp (docs/benchmarks.md): ½ ln b of an
 // elastic strain of 10⁻² is four products and one 3×3 inverse, about a tenth of the Jacobi's
