@@ -150,8 +150,10 @@ void expLanes(const double (&a)[6][Lanes], double (&out)[6][Lanes]) {
         r *= 0.5;
         ++squarings;
     }
-    int terms = 0; // eʳ ≤ e^½ < 1.65 once r ≤ ½
-    for (double t = 1.0; t * 1.65 > 0x1p-53;)
+    // eʳ ≤ e^½ < 1.65 once r ≤ ½; at most 30 terms (r = ½ needs 17): a lane that is not finite
+    // (r = ∞ after the capped halvings) ends with a non-finite result, not an endless loop.
+    int terms = 0;
+    for (double t = 1.0; t * 1.65 > 0x1p-53 && terms < 30;)
         t *= r / ++terms; // t = rᴷ/K!
     const double scale = std::ldexp(1.0, -squarings);
     // T = 1; T ← 1 + (A/2ˢ) T / k for k = K … 1.

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace mpm {
@@ -192,6 +193,16 @@ TEST(SymmetricSeries, ExpMatchesLongDoubleDecomposition3D) {
 
 TEST(SymmetricSeries, ExpMatchesLongDoubleDecomposition2D) {
     checkExp<true>(4);
+}
+
+TEST(SymmetricSeries, ExpOfANonFiniteLaneEndsNonFinite) {
+    // An infinite entry (a diverged point) must end the series and show in the result.
+    alignas(64) double a[6][L] = {}, e[6][L];
+    a[0][4] = std::numeric_limits<double>::infinity();
+    a[3][1] = std::nan("");
+    expLanes<L, false>(a, e);
+    EXPECT_FALSE(std::isfinite(e[0][4]));
+    EXPECT_FALSE(std::isfinite(e[3][1]));
 }
 
 TEST(SymmetricSeries, ExpInvertsHalfLog) {
