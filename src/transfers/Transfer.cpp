@@ -37,6 +37,21 @@ inline void storeHigh(NodeLine& q, const Double4& x) {
     std::memcpy(q.v + 4, &x, sizeof x);
 }
 
+/// A whole node line as one vector (one AVX-512 register, or two AVX ones).
+using Double8 = double __attribute__((vector_size(64)));
+inline Double8 load(const NodeLine& q) {
+    Double8 x;
+    std::memcpy(&x, q.v, sizeof x);
+    return x;
+}
+inline void store(NodeLine& q, const Double8& x) {
+    std::memcpy(q.v, &x, sizeof x);
+}
+/// [lo, hi] as one line vector.
+inline Double8 join(const Double4& lo, const Double4& hi) {
+    return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
 template <int dim, class K, bool Affine> class TransferImpl final : public Transfer<dim> {
     static constexpr int W = K::Width;
@@ -282,15 +297,19 @@ private:
     /// P2G of one particle into the node lines: low half [m, momentum, 0], high half
     /// [internal force, 0]. With the stencil factored per x-row (w = w_x w_r,
     /// ∇w·h = (w'_x w_r, w_x ∂_y w_r, w_x ∂_z w_r)), the contribution to node a of a row is
-    /// low += w_x(a) R0 + a w_x(a) R1, high += w_x(a) F0 + w'_x(a) F1 (four 4-lane
-    /// multiply-adds), with R0 = w_r [m, m v + m C h (−fx, oy, oz)], R1 = w_r [0, m C h e_x],
-    /// F0 = S (0, ∂_y w_r, ∂_z w_r), F1 = w_r S e_x and S = −V σ / h [000 Eq. 13].
+    /// low += w_x(a) R0 + a w_x(a) R1, high += w_x(a) F0 + w'_x(a) F1, with
+    /// R0 = w_r [m, m v + m C h (−fx, oy, oz)], R1 = w_r [0, m C h e_x], F0 = S (0, ∂_y w_r,
+    /// ∂_z w_r), F1 = w_r S e_x and S = −V σ / h [000 Eq. 13]: on the whole line,
+    /// line += w_x(a) [R0, F0] + [a w_x(a), w'_x(a)] [R1, F1], two 8-lane multiply-adds.
+    /// A half that is not scattered (no momentum, no stress, no R1 without APIC) gets the
+    /// addend −0, which leaves every value, signed zeros included, as it was.
     template <bool Momentum, bool Stress>
     inline void scatterOne(const Stencil& s, NodeLine* lines, double m, const Vec<dim>& mv,
                            const Mat<dim>& mC, const Mat<dim>& S) const {
         // Built from registers (brace initialisers), not lane by lane through memory.
         auto at = [](const auto& v, int k) { return k < dim ? v[k] : 0.0; };
         const Double4 zero = {0.0, 0.0, 0.0, 0.0};
+        const Double4 none = {-0.0, -0.0, -0.0, -0.0};
         Double4 P = zero, Q[3] = {zero, zero, zero}, T[3] = {zero, zero, zero};
         if constexpr (Momentum) {
             Vec<dim> p0 = mv;
@@ -305,19 +324,27 @@ private:
                 T[d] = Double4{at(S.col(d), 0), at(S.col(d), 1), at(S.col(d), 2), 0.0};
         Index o[dim][W];
         offsets(s, o);
+        // The second multiplier of node a: [a w_x(a) ×4, w'_x(a) ×4].
+        Double8 m1[W];
+        for (int a = 0; a < W; ++a) {
+            const double awx = a * s.w[0][a], dwx = s.dw[0][a];
+            m1[a] = Double8{awx, awx, awx, awx, dwx, dwx, dwx, dwx};
+        }
         // One row of the stencil: weight w_r and derivatives ∂_y w_r, ∂_z w_r; offsets oy, oz.
         auto row = [&](Index first, double wr, double dy, double dz, double oy, double oz) {
-            const Double4 r0 = wr * (P + oy * Q[1] + oz * Q[2]), r1 = wr * Q[0];
-            const Double4 f0 = dy * T[1] + dz * T[2], f1 = wr * T[0];
+            Double4 r0 = none, r1 = none, f0 = none, f1 = none;
+            if constexpr (Momentum) r0 = wr * (P + oy * Q[1] + oz * Q[2]);
+            if constexpr (Momentum && Affine) r1 = wr * Q[0];
+            if constexpr (Stress) {
+                f0 = dy * T[1] + dz * T[2];
+                f1 = wr * T[0];
+            }
+            const Double8 x0 = join(r0, f0), x1 = join(r1, f1);
             for (int a = 0; a < W; ++a) {
                 NodeLine& q = lines[first + o[0][a]];
-                const double wx = s.w[0][a];
-                if constexpr (Momentum) {
-                    Double4 lo = loadLow(q) + wx * r0;
-                    if constexpr (Affine) lo += (a * wx) * r1;
-                    storeLow(q, lo);
-                }
-                if constexpr (Stress) storeHigh(q, loadHigh(q) + wx * f0 + s.dw[0][a] * f1);
+                Double8 x = load(q) + s.w[0][a] * x0;
+                x += m1[a] * x1;
+                store(q, x);
             }
         };
         forRows(s, o, row);
