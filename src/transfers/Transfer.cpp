@@ -10,6 +10,9 @@
 #include <cmath>
 #include <cstring>
 #include <type_traits>
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
 
 namespace mpm {
 
@@ -52,19 +55,41 @@ inline Double8 join(const Double4& lo, const Double4& hi) {
     return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
 }
 
+/// to = from for an object of whole 32-byte chunks, 32-byte aligned, by non-temporal stores: the
+/// lines it overwrites are not read first (a plain store reads each line before writing it),
+/// and consecutive objects fill whole lines in the write-combining buffers. Call sfence()
+/// before another thread reads them.
+template <class T> inline void streamStore(T& to, const T& from) {
+    static_assert(sizeof(T) % 32 == 0 && alignof(T) >= 32);
+#if defined(__AVX__)
+    const double* src = reinterpret_cast<const double*>(&from);
+    double* dst = reinterpret_cast<double*>(&to);
+    for (std::size_t k = 0; k < sizeof(T) / sizeof(double); k += 4)
+        _mm256_stream_pd(dst + k, _mm256_loadu_pd(src + k));
+#else
+    to = from;
+#endif
+}
+inline void sfence() {
+#if defined(__AVX__)
+    _mm_sfence();
+#endif
+}
+
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
 template <int dim, class K, bool Affine> class TransferImpl final : public Transfer<dim> {
     static constexpr int W = K::Width;
 
     /// Kernel data of one particle: coordinates of the first stencil node, 1D weights and
     /// derivatives per axis, and (APIC only, whose affine terms need it) the particle's offset
-    /// from the first node in cell units: 184 bytes a point in 3D with it, 160 without.
-    struct StencilWeights {
+    /// from the first node in cell units: 192 bytes a point in 3D with it, 160 without (whole
+    /// 32-byte chunks, for streamStore).
+    struct alignas(32) StencilWeights {
         int base[dim];
         double w[dim][W];
         double dw[dim][W];
     };
-    struct StencilWithOffset : StencilWeights {
+    struct alignas(32) StencilWithOffset : StencilWeights {
         Vec<dim> fx;
     };
     using Stencil = std::conditional_t<Affine, StencilWithOffset, StencilWeights>;
@@ -167,7 +192,9 @@ public:
 private:
     /// The stencil of point i at its x^n (computeWeights' points and grid).
     inline void evaluate(Index i) const {
-        Stencil& s = st_[i];
+        evaluate(i, st_[i]);
+    }
+    inline void evaluate(Index i, Stencil& s) const {
         const Vec<dim> xh = (points_->x[i] - grid_->origin()) * grid_->invH();
         for (int d = 0; d < dim; ++d) {
             s.base[d] = kernel_.eval(xh[d], s.w[d], s.dw[d]);
@@ -371,23 +398,34 @@ private:
         const auto& order = sort.order();
         NodeLine* lines = g.lines.data();
         assert(&p == points_ && "scatter of other points than computeWeights'");
-        // The step's first scatter evaluates the stencils (chosen once, not per point).
+        auto scatterPoint = [&](const Stencil& s, Index i) {
+            const double m = p.mass[i];
+            Mat<dim> mC = Mat<dim>::Zero();
+            if constexpr (Affine) mC = (m * h) * p.C[i];
+            Mat<dim> stressTerm = Mat<dim>::Zero();
+            if constexpr (Stress)
+                stressTerm = (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
+            scatterOne<Momentum, Stress>(s, lines, m, m * p.v[i], mC, stressTerm);
+        };
+        // The step's first scatter evaluates the stencils (chosen once, not per point), scatters
+        // from registers and streams them to st_ for the later transfers: the stencil lines are
+        // written without being read first (P2G −13 to −22 % in block2D, docs/benchmarks.md).
         auto scatterAll = [&](auto evaluateFirst) {
-            sort.forEachBlockByColour(worthThreads(static_cast<Index>(p.size())), [&](Index,
-                                                                                      auto r) {
-                for (Index j = r.begin; j < r.end; ++j) {
-                    const Index i = order[j];
-                    if constexpr (decltype(evaluateFirst)::value) evaluate(i);
-                    const double m = p.mass[i];
-                    Mat<dim> mC = Mat<dim>::Zero();
-                    if constexpr (Affine) mC = (m * h) * p.C[i];
-                    Mat<dim> stressTerm = Mat<dim>::Zero();
-                    if constexpr (Stress)
-                        stressTerm =
-                            (-p.volume[i] * invH) * p.stress[i].template topLeftCorner<dim, dim>();
-                    scatterOne<Momentum, Stress>(st_[i], lines, m, m * p.v[i], mC, stressTerm);
-                }
-            });
+            sort.forEachBlockByColour(worthThreads(static_cast<Index>(p.size())),
+                                      [&](Index, auto r) {
+                                          for (Index j = r.begin; j < r.end; ++j) {
+                                              const Index i = order[j];
+                                              if constexpr (decltype(evaluateFirst)::value) {
+                                                  Stencil s;
+                                                  evaluate(i, s);
+                                                  scatterPoint(s, i);
+                                                  streamStore(st_[i], s);
+                                              } else {
+                                                  scatterPoint(st_[i], i);
+                                              }
+                                          }
+                                          if constexpr (decltype(evaluateFirst)::value) sfence();
+                                      });
         };
         if (pending_)
             scatterAll(std::true_type{});
