@@ -141,21 +141,31 @@ template <int dim> struct Particles {
     /// [002 Eq. 76]. Returns the first particle whose volume is not positive and finite (det F ≤ 0:
     /// an inverted element), or size() if none.
     Index updateDeformation(double dt, const std::vector<char>& volumeFromRate) {
+        // Chosen once: without rate-form materials no point's material is looked up.
+        if (std::none_of(volumeFromRate.begin(), volumeFromRate.end(), [](char c) { return c; }))
+            return advanceDeformation(dt, [](Index) { return false; });
+        return advanceDeformation(dt, [&](Index i) { return volumeFromRate[material[i]] != 0; });
+    }
+
+private:
+    template <class FromRate> Index advanceDeformation(double dt, FromRate&& fromRate) {
         const Index n = static_cast<Index>(size());
         Index inverted = n;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : inverted)
         for (Index i = 0; i < n; ++i) {
-            // The new F from registers: det F is not re-read from the stores just made.
+            // The new F and V from registers: det F is not re-read from the stores just made.
             const Mat<dim> Fn = (Mat<dim>::Identity() + dt * L[i]) * F[i];
             F[i] = Fn;
-            volume[i] = volumeFromRate[material[i]] ? volume[i] * std::exp(dt * L[i].trace())
-                                                    : Fn.determinant() * volume0[i];
-            if (!(volume[i] > 0 && volume[i] < std::numeric_limits<double>::infinity()))
+            const double Vn = fromRate(i) ? volume[i] * std::exp(dt * L[i].trace())
+                                          : Fn.determinant() * volume0[i];
+            volume[i] = Vn;
+            if (!(Vn > 0 && Vn < std::numeric_limits<double>::infinity()))
                 inverted = std::min(inverted, i);
         }
         return inverted;
     }
 
+public:
     /// Stop every point: v = 0 and C = 0 (the end of a gravity preload).
     void stop() {
         for (std::size_t i = 0; i < size(); ++i) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transfers/Transfer.hpp"
 #include "core/Parallel.hpp"
+#include "core/Stream.hpp"
 
 #include "kernels/Kernels.hpp"
 
@@ -10,9 +11,6 @@
 #include <cmath>
 #include <cstring>
 #include <type_traits>
-#if defined(__AVX__)
-#include <immintrin.h>
-#endif
 
 namespace mpm {
 
@@ -53,42 +51,6 @@ inline void store(NodeLine& q, const Double8& x) {
 /// [lo, hi] as one line vector.
 inline Double8 join(const Double4& lo, const Double4& hi) {
     return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
-}
-
-/// to = from for an object of whole 32-byte chunks, 32-byte aligned, by non-temporal stores: the
-/// lines it overwrites are not read first (a plain store reads each line before writing it),
-/// and consecutive objects fill whole lines in the write-combining buffers. Call sfence()
-/// before another thread reads them.
-template <class T> inline void streamStore(T& to, const T& from) {
-    static_assert(sizeof(T) % 32 == 0 && alignof(T) >= 32);
-#if defined(__AVX__)
-    const double* src = reinterpret_cast<const double*>(&from);
-    double* dst = reinterpret_cast<double*>(&to);
-    for (std::size_t k = 0; k < sizeof(T) / sizeof(double); k += 4)
-        _mm256_stream_pd(dst + k, _mm256_loadu_pd(src + k));
-#else
-    to = from;
-#endif
-}
-/// to = from for a matrix or vector: by 16-byte non-temporal stores where T allows them (2D:
-/// Mat2, 16-byte aligned), else a plain store (a 3×3 is 8-byte aligned, and eight-byte
-/// non-temporal stores cost G2P more than the reads they save: block3D G2P +5–10 %).
-template <class T> inline void streamValue(T& to, const T& from) {
-#if defined(__AVX__)
-    if constexpr (alignof(T) >= 16 && sizeof(T) % 16 == 0) {
-        const double* src = reinterpret_cast<const double*>(&from);
-        double* dst = reinterpret_cast<double*>(&to);
-        for (std::size_t k = 0; k < sizeof(T) / sizeof(double); k += 2)
-            _mm_stream_pd(dst + k, _mm_loadu_pd(src + k));
-        return;
-    }
-#endif
-    to = from;
-}
-inline void sfence() {
-#if defined(__AVX__)
-    _mm_sfence();
-#endif
 }
 
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
