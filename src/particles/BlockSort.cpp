@@ -10,22 +10,29 @@
 
 namespace mpm {
 
-template <int dim> bool BlockSort<dim>::sortByBlock(Index numBlocks) {
+template <int dim>
+template <class KeyOf>
+Index BlockSort<dim>::sortByBlock(Index n, Index numBlocks, bool& onePass, KeyOf&& keyOf) {
     // Passes of at most 16 bits (a count array of ≤ 65 536 entries a thread, in L2): one pass
-    // up to 65 536 blocks, two up to 2³², each a stable counting sort.
+    // up to 65 536 blocks, two up to 2³², each a stable counting sort. The first pass takes the
+    // keys from keyOf in storage order (the identity order: no order array to read) and stores
+    // them for its scatter.
     int bits = 1;
     while ((Index(1) << bits) < numBlocks)
         ++bits;
     const int passes = (bits + 15) / 16;
     const int digitBits = (bits + passes - 1) / passes;
     const std::uint32_t buckets = 1u << digitBits;
-    const Index n = static_cast<Index>(key_.size());
+    onePass = passes == 1;
+    key_.resize(n);
+    order_.resize(n);
     orderTmp_.resize(n);
     keyTmp_.resize(n);
     const bool threads = worthThreads(n);
     counts_.assign(static_cast<std::size_t>(omp_get_max_threads()) * buckets, 0);
     digitBegin_.resize(buckets + 1);
-#pragma omp parallel if (threads)
+    Index firstOutside = n;
+#pragma omp parallel if (threads) reduction(min : firstOutside)
     {
         const int team = omp_get_num_threads(), t = omp_get_thread_num();
         const Index lo = n * t / team, hi = n * (t + 1) / team; // this thread's slice
@@ -33,8 +40,17 @@ template <int dim> bool BlockSort<dim>::sortByBlock(Index numBlocks) {
         for (int pass = 0; pass < passes; ++pass) {
             const int shift = digitBits * pass;
             std::fill(count, count + buckets, 0);
-            for (Index j = lo; j < hi; ++j)
-                ++count[(key_[j] >> shift) & (buckets - 1)];
+            if (pass == 0) {
+                for (Index j = lo; j < hi; ++j) {
+                    const std::int64_t k = keyOf(j);
+                    if (k < 0) firstOutside = std::min(firstOutside, j);
+                    key_[j] = k < 0 ? 0u : static_cast<std::uint32_t>(k);
+                    ++count[key_[j] & (buckets - 1)];
+                }
+            } else {
+                for (Index j = lo; j < hi; ++j)
+                    ++count[(key_[j] >> shift) & (buckets - 1)];
+            }
 #pragma omp barrier
 #pragma omp single
             { // exclusive prefix in (digit, slice) order: the sort is stable for any team
@@ -52,7 +68,7 @@ template <int dim> bool BlockSort<dim>::sortByBlock(Index numBlocks) {
             }
             for (Index j = lo; j < hi; ++j) {
                 const Index to = count[(key_[j] >> shift) & (buckets - 1)]++;
-                orderTmp_[to] = order_[j];
+                orderTmp_[to] = pass == 0 ? j : order_[j];
                 keyTmp_[to] = key_[j];
             }
 #pragma omp barrier
@@ -63,7 +79,7 @@ template <int dim> bool BlockSort<dim>::sortByBlock(Index numBlocks) {
             }
         }
     }
-    return passes == 1;
+    return firstOutside;
 }
 
 template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const Grid<dim>& grid) {
@@ -71,31 +87,22 @@ template <int dim> Index BlockSort<dim>::update(const Particles<dim>& p, const G
     const Index nb = grid.numBlocks();
     if (nb > std::numeric_limits<std::int32_t>::max())
         throw std::length_error("BlockSort: more than 2³¹ blocks");
-    // The sort's keys in storage order (its first pass starts from the identity order).
-    key_.resize(n);
-    order_.resize(n);
-    Index firstOutside = n;
-    const Vec<dim> origin = grid.origin();
-    const double invH = grid.invH();
-#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(min : firstOutside)
-    for (Index i = 0; i < n; ++i) {
-        const Vec<dim> xh = (p.x[i] - origin) * invH;
-        order_[i] = i;
-        if (!grid.insideArrays(xh)) {
-            firstOutside = std::min(firstOutside, i);
-            key_[i] = 0;
-        } else {
-            key_[i] = static_cast<std::uint32_t>(grid.blockOf(xh));
-        }
-    }
-    if (firstOutside < n) return firstOutside;
     if (static_cast<Index>(slot_.size()) != nb) {
         slot_.assign(nb, -1);
         active_.assign(nb, 0);
         blocks_.clear();
         activeNodeBlocks_.clear();
     }
-    const bool onePass = sortByBlock(nb);
+    const Vec<dim> origin = grid.origin();
+    const double invH = grid.invH();
+    bool onePass = false;
+    // The block of each particle, or −1 for one outside the grid's arrays (the sort's result is
+    // then not used).
+    const Index firstOutside = sortByBlock(n, nb, onePass, [&](Index i) -> std::int64_t {
+        const Vec<dim> xh = (p.x[i] - origin) * invH;
+        return grid.insideArrays(xh) ? grid.blockOf(xh) : -1;
+    });
+    if (firstOutside < n) return firstOutside;
 
     // The occupied blocks and their ranges; last step's entries of the per-block index are
     // forgotten one by one (no pass over the box).

@@ -77,12 +77,14 @@ public:
     }
 
 private:
-    /// order_ = the particles stably sorted by their block (key_, with order_ the identity, on
-    /// entry): LSD radix sort of ≤ 16 bits a pass, each pass a counting sort over the threads'
-    /// slices (the same order for any thread count).
-    /// Stable radix sort of key_ (with order_) by block; true if it took one pass, whose
-    /// digits are then the blocks and digitBegin_ their first positions.
-    bool sortByBlock(Index numBlocks);
+    /// order_ = the particles 0 … n−1 stably sorted by their block keyOf(i) (an int64, −1 for
+    /// a particle outside the grid's arrays), key_ their blocks: LSD radix sort of ≤ 16 bits a
+    /// pass, each pass a counting sort over the threads' slices (the same order for any thread
+    /// count), the keys evaluated in the first pass's count. onePass: it took one pass, whose
+    /// digits are then the blocks and digitBegin_ their first positions. Returns the first
+    /// particle outside, or n.
+    template <class KeyOf>
+    Index sortByBlock(Index n, Index numBlocks, bool& onePass, KeyOf&& keyOf);
 
     std::vector<Index> order_;
     std::vector<Index> orderTmp_;
