@@ -375,6 +375,25 @@ private:
         const auto& order = sort.order();
         NodeLine* lines = g.lines.data();
         assert(&p == points_ && "scatter of other points than computeWeights'");
+        // P2G reads the points in block order (order[]), whose jumps the hardware prefetchers do
+        // not follow: the fields it reads are fetched `Ahead` points early (block2D P2G −10 to
+        // −16 %, docs/benchmarks.md).
+        constexpr Index Ahead = 8;
+        auto prefetchPoint = [this, &p](Index f, auto evaluating) {
+            if constexpr (decltype(evaluating)::value)
+                __builtin_prefetch(&p.x[f]);
+            else
+                __builtin_prefetch(&st_[f]);
+            if constexpr (Momentum) {
+                __builtin_prefetch(&p.mass[f]);
+                __builtin_prefetch(&p.v[f]);
+                if constexpr (Affine) __builtin_prefetch(&p.C[f]);
+            }
+            if constexpr (Stress) {
+                __builtin_prefetch(&p.volume[f]);
+                __builtin_prefetch(&p.stress[f]);
+            }
+        };
         auto scatterPoint = [&](const Stencil& s, Index i) {
             const double m = p.mass[i];
             Mat<dim> mC = Mat<dim>::Zero();
@@ -392,6 +411,8 @@ private:
                                       [&](Index, auto r) {
                                           for (Index j = r.begin; j < r.end; ++j) {
                                               const Index i = order[j];
+                                              if (j + Ahead < r.end)
+                                                  prefetchPoint(order[j + Ahead], evaluateFirst);
                                               if constexpr (decltype(evaluateFirst)::value) {
                                                   Stencil s;
                                                   evaluate(i, s);
