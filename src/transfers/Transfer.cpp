@@ -59,17 +59,18 @@ template <int dim, class K, bool Affine> class TransferImpl final : public Trans
 
     /// Kernel data of one particle: coordinates of the first stencil node, 1D weights and
     /// derivatives per axis, and (APIC only, whose affine terms need it) the particle's offset
-    /// from the first node in cell units: 192 bytes a point in 3D with it, 160 without (whole
-    /// 32-byte chunks, for streamStore).
-    struct alignas(32) StencilWeights {
+    /// from the first node in cell units: 192 bytes a point in 3D with it, 160 without, 128 in 2D
+    /// (whole 32-byte chunks, for streamStore).
+    struct StencilWeights {
         int base[dim];
         double w[dim][W];
         double dw[dim][W];
     };
-    struct alignas(32) StencilWithOffset : StencilWeights {
+    struct StencilWithOffset : StencilWeights {
         Vec<dim> fx;
     };
-    using Stencil = std::conditional_t<Affine, StencilWithOffset, StencilWeights>;
+    /// Padded to whole 32-byte chunks as a whole (padding the base would push fx past it).
+    struct alignas(32) Stencil : std::conditional_t<Affine, StencilWithOffset, StencilWeights> {};
     /// fx_d of an APIC stencil; 0 for the others (the terms that use it are APIC's only).
     static inline double offset([[maybe_unused]] const Stencil& s, [[maybe_unused]] int d) {
         if constexpr (Affine)
