@@ -47,14 +47,16 @@ def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNod
     d = dim
     vec, mat = 8 * d, 8 * d * d
     stencil = 8 + 2 * 8 * 3 * d + 8 * d  # node0, w and dw (3 per axis), fx
+    stencil = 32 * ((stencil + 31) // 32)  # padded to whole 32-byte chunks (streamed)
     # --- sort: BlockSort::update (xh per particle into the radix keys; one counting-sort pass:
     # count, then place key_ and order_), and every ReorderInterval = 20 steps
     # Particles::permute of every field + a second update. (Since 2026-11-27 the kernel
     # weights are evaluated in P2G's pass, below.)
     sortFlop = 2 * d  # xh = (x - origin) / h
-    # x; key_ (4 B) and order_ w+wa; the count reads key_; the placing reads key_ and order_
-    # and writes their copies (w+wa)
-    sortBytes = vec + 2 * 4 + 2 * 8 + 4 + (4 + 8) + 2 * (4 + 8)
+    # x; the count evaluates the keys and writes key_ (4 B, w+wa); the placing reads key_ and
+    # writes the copies of key_ and order_ (w+wa; the first pass's order is the identity,
+    # not read)
+    sortBytes = vec + 2 * 4 + 4 + 2 * (4 + 8)
     weightFlop = 2 * d + d * (1 + 1 + 3 + 6 + 1 + 1)
     fb, nfields = field_bytes(d)
     permuteBytes = 3 * fb + 8 * nfields + sortBytes + 2 * 8  # + materialParticles_ lists
@@ -72,8 +74,9 @@ def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNod
         # forStencil: per row oy 1; per node wgt 1, grad 2, offset 1; mass 2, momentum
         # (mC offset 6, + mv 2, × wgt 2, += 2) 12, force (S grad 6, += 2) 8.
         p2gFlop = (2 + 5 + 5) + 3 * 1 + 9 * (4 + 2 + 12 + 8)
-    # order, mass, v, C, volume, stress; x, and the stencil it evaluates (weightFlop) w+wa
-    p2gBytes = 8 + 8 + vec + mat + 8 + 72 + vec + 2 * stencil
+    # order, mass, v, C, volume, stress; x, and the stencil it evaluates (weightFlop),
+    # streamed (written without write-allocate, src/core/Stream.hpp)
+    p2gBytes = 8 + 8 + vec + mat + 8 + 72 + vec + stencil
     p2g = (p2gFlop + weightFlop,
            p2gBytes + clearBytes * activeNodes + 2 * (8 + 2 * vec) * massNodes)
     # --- grid: per active node the mass is read; per node with mass v0 = p/m (d ÷),
@@ -88,7 +91,9 @@ def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNod
         # forStencil: per row 1; per node 4 + vPic 4, B 10, L 8; then C 5, L 4, x 4, |v|² 6,
         # finite 1, energy 3.
         g2pFlop = 3 * 1 + 9 * (4 + 4 + 10 + 8) + 5 + 4 + 4 + 6 + 1 + 3
-    g2pBytes = stencil + 2 * vec + 2 * vec + 2 * mat + 2 * mat + 8  # x rw; v, C, L w+wa; mass
+    # x rw; v w+wa; C, L w+wa, or streamed in 2D (16-byte stores); mass
+    cl = 1 if d == 2 else 2
+    g2pBytes = stencil + 2 * vec + 2 * vec + cl * mat + cl * mat + 8
     g2p = (g2pFlop, g2pBytes + vec * massNodes)
     # --- constitutive: Particles::updateDeformation (F ← (1 + Δt L) F, V = det F V⁰), then
     # the Hencky update of 8-particle batches (since 2026-11-27 without eigen-decomposition,
