@@ -307,7 +307,9 @@ private:
     /// ∂_z w_r), F1 = w_r S e_x and S = −V σ / h [000 Eq. 13]: on the whole line,
     /// line += w_x(a) [R0, F0] + [a w_x(a), w'_x(a)] [R1, F1], two 8-lane multiply-adds.
     /// A half that is not scattered (no momentum, no stress, no R1 without APIC) gets the
-    /// addend −0, which leaves every value, signed zeros included, as it was.
+    /// addend w·(−0) = −0 for the weights w_x, a w_x ≥ 0, which leaves every value, signed zeros
+    /// included, as it was; w'_x may be negative, but a force half that is not scattered holds
+    /// the +0 of the zeroed line, which any signed zero keeps.
     template <bool Momentum, bool Stress>
     inline void scatterOne(const Stencil& s, NodeLine* lines, double m, const Vec<dim>& mv,
                            const Mat<dim>& mC, const Mat<dim>& S) const {
