@@ -31,12 +31,6 @@ inline Double4 loadHigh(const NodeLine& q) {
     std::memcpy(&x, q.v + 4, sizeof x);
     return x;
 }
-inline void storeLow(NodeLine& q, const Double4& x) {
-    std::memcpy(q.v, &x, sizeof x);
-}
-inline void storeHigh(NodeLine& q, const Double4& x) {
-    std::memcpy(q.v + 4, &x, sizeof x);
-}
 
 /// A whole node line as one vector (one AVX-512 register, or two AVX ones).
 using Double8 = double __attribute__((vector_size(64)));
