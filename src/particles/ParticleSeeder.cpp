@@ -7,11 +7,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace mpm {
 
 namespace {
+
+/// Quadrature samples per Poisson-disk spacing along an axis for `volumes: voronoi`: about 900
+/// samples a point in 3D, 400 in 2D (Voronoi volumes to ~1 % rms; SeedingTest).
+template <int dim> constexpr int VoronoiSamplesPerSpacing = dim == 3 ? 8 : 16;
 
 template <int dim> Vec<dim> toVec(const std::vector<double>& v) {
     Vec<dim> r;
@@ -114,14 +119,19 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
         int perDirection = 2;
         int perCell = dim == 2 ? 4 : 8;
         long rngSeed = 0;
+        bool voronoi = false;
         if (set.has("seeding")) {
             const Dictionary sd = set.subDict("seeding");
             method = sd.getWordOr("method", "regular", {"regular", "poissonDisk"});
-            if (method == "regular")
+            if (method == "regular") {
                 perDirection = sd.getIntOr("perDirection", 2, Bounds::closed(1, 8));
-            else {
+                if (sd.has("volumes"))
+                    sd.error("volumes", "only poissonDisk seeding takes `volumes`: a regular "
+                                        "lattice gives every point its sub-cell (h/n)^dim");
+            } else {
                 perCell = sd.getIntOr("perCell", perCell, Bounds::closed(1, 512));
                 rngSeed = sd.getIntOr("seed", 0, Bounds::nonNegative());
+                voronoi = sd.getWordOr("volumes", "equal", {"equal", "voronoi"}) == "voronoi";
             }
             sd.checkUnknownKeys();
         }
@@ -199,6 +209,15 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
         if (xs.empty())
             set.error("region", "the region seeds no particles (is it smaller "
                                 "than a cell, or outside the grid?)");
+        // Each point's volume: equal shares of the region, or its Voronoi cell in the region
+        // (outside the bodies) [002 §4.5].
+        std::vector<double> volumes(xs.size(), volume);
+        if (voronoi) {
+            std::function<bool(const Vec<dim>&)> inBody;
+            if (outsideBodies) inBody = [&](const Vec<dim>& x) { return bodyDistance_(x) < 0; };
+            volumes = voronoiVolumes<dim>(*region, xs, poissonDiskSpacing(grid_.h(), perCell, dim),
+                                          VoronoiSamplesPerSpacing<dim>, inBody);
+        }
         for (const auto& x : xs)
             for (int d = 0; d < dim; ++d)
                 if (x[d] < grid_.lo()[d] || x[d] > grid_.hi()[d]) {
@@ -233,9 +252,9 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
             p.C[i].setZero();
             p.L[i].setZero();
             p.F[i].setIdentity();
-            p.mass[i] = rho * volume;
-            p.volume0[i] = volume;
-            p.volume[i] = volume;
+            p.mass[i] = rho * volumes[k];
+            p.volume0[i] = volumes[k];
+            p.volume[i] = volumes[k];
             p.plasticStrain[i] = 0;
             p.id[i] = nextId++;
             p.material[i] = mat;
@@ -256,7 +275,7 @@ template <int dim> void ParticleSeeder<dim>::seed(const Dictionary& sets, Partic
                 symmetricEigen3(p.be[i], lam, Q);
                 const Mat3 V = fromEigen(Q, lam.cwiseSqrt());
                 p.F[i] = V.template topLeftCorner<dim, dim>();
-                p.volume[i] = volume * p.F[i].determinant();
+                p.volume[i] = volumes[k] * p.F[i].determinant();
             }
         }
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/Seeding.hpp"
 #include "core/Neighbourhood.hpp"
+#include "core/Parallel.hpp"
 
 #include <algorithm>
 #include <array>
@@ -278,10 +279,125 @@ std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::s
     return n - kept;
 }
 
+template <int dim>
+std::vector<double> voronoiVolumes(const Region<dim>& region, const std::vector<Vec<dim>>& points,
+                                   double spacing, int samplesPerSpacing,
+                                   const std::function<bool(const Vec<dim>&)>& excluded) {
+    if (!(spacing > 0.0) || !std::isfinite(spacing))
+        throw std::invalid_argument("voronoiVolumes: spacing must be positive");
+    if (samplesPerSpacing < 1)
+        throw std::invalid_argument("voronoiVolumes: samplesPerSpacing must be >= 1");
+    const std::size_t n = points.size();
+    std::vector<double> volume(n, 0.0);
+    const Eigen::AlignedBox<double, dim> box = region.bounds();
+    if (n == 0 || box.isEmpty()) return volume;
+
+    // Points binned in cells of size `spacing` over the bounds (CSR: start, then indices): the
+    // 3^dim block around a sample's cell holds every point within `spacing` of it, the 5^dim
+    // block every point within 2 `spacing`.
+    IVec<dim> cells;
+    for (int d = 0; d < dim; ++d)
+        cells[d] = std::max(1, static_cast<int>(std::ceil(box.sizes()[d] / spacing)));
+    const auto cellOf = [&](const Vec<dim>& x) {
+        IVec<dim> c;
+        for (int d = 0; d < dim; ++d)
+            c[d] = std::clamp(static_cast<int>(std::floor((x[d] - box.min()[d]) / spacing)), 0,
+                              cells[d] - 1);
+        return c;
+    };
+    const auto linear = [&](const IVec<dim>& c) {
+        std::size_t k = 0;
+        for (int d = dim - 1; d >= 0; --d)
+            k = k * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(c[d]);
+        return k;
+    };
+    std::size_t cellCount = 1;
+    for (int d = 0; d < dim; ++d)
+        cellCount *= static_cast<std::size_t>(cells[d]);
+    std::vector<std::size_t> start(cellCount + 1, 0);
+    std::vector<std::size_t> cellIndex(n);
+    for (std::size_t i = 0; i < n; ++i)
+        ++start[(cellIndex[i] = linear(cellOf(points[i]))) + 1];
+    for (std::size_t k = 0; k < cellCount; ++k)
+        start[k + 1] += start[k];
+    std::vector<std::size_t> members(n);
+    {
+        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < n; ++i)
+            members[fill[cellIndex[i]]++] = i;
+    }
+    // Nearest point within `ring` cells of c (lowest index on a tie), or n if none is within
+    // ring · spacing, the distance up to which the block is complete.
+    const auto nearest = [&](const Vec<dim>& x, const IVec<dim>& c, int ring) {
+        IVec<dim> lo;
+        IVec<dim> hi;
+        for (int d = 0; d < dim; ++d) {
+            lo[d] = std::max(0, c[d] - ring);
+            hi[d] = std::min(cells[d] - 1, c[d] + ring);
+        }
+        std::size_t best = n;
+        double best2 = ring * spacing * ring * spacing;
+        forEachIndex<dim>(lo, hi, [&](const IVec<dim>& b) {
+            const std::size_t k = linear(b);
+            for (std::size_t m = start[k]; m < start[k + 1]; ++m) {
+                const std::size_t j = members[m];
+                const double q = (points[j] - x).squaredNorm();
+                if (q < best2 || (q == best2 && j < best)) {
+                    best2 = q;
+                    best = j;
+                }
+            }
+        });
+        return best;
+    };
+
+    // The sample lattice: n_d = ceil(L_d samplesPerSpacing / spacing) midpoints along axis d.
+    IVec<dim> samples;
+    Vec<dim> step;
+    double sampleVolume = 1.0;
+    long long total = 1;
+    for (int d = 0; d < dim; ++d) {
+        samples[d] =
+            std::max(1, static_cast<int>(std::ceil(box.sizes()[d] * samplesPerSpacing / spacing)));
+        step[d] = box.sizes()[d] / samples[d];
+        sampleVolume *= step[d];
+        total *= samples[d];
+    }
+    std::vector<long long> count(n, 0);
+#pragma omp parallel if (worthThreads(static_cast <Index>(total)))
+    {
+        std::vector<long long> local(n, 0);
+#pragma omp for schedule(static)
+        for (long long s = 0; s < total; ++s) {
+            Vec<dim> x;
+            long long rest = s;
+            for (int d = 0; d < dim; ++d) {
+                x[d] = box.min()[d] + (static_cast<double>(rest % samples[d]) + 0.5) * step[d];
+                rest /= samples[d];
+            }
+            if (!region.contains(x) || (excluded && excluded(x))) continue;
+            const IVec<dim> c = cellOf(x);
+            std::size_t j = nearest(x, c, 1);
+            if (j == n) j = nearest(x, c, 2);
+            if (j < n) ++local[j];
+        }
+#pragma omp critical
+        for (std::size_t i = 0; i < n; ++i)
+            count[i] += local[i];
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        volume[i] = static_cast<double>(count[i]) * sampleVolume;
+    return volume;
+}
+
 template std::vector<Vec<2>> seedRegular<2>(const Region<2>&, const Vec<2>&, double, int);
 template std::vector<Vec<3>> seedRegular<3>(const Region<3>&, const Vec<3>&, double, int);
 template std::vector<Vec<2>> seedPoissonDisk<2>(const Region<2>&, double, std::uint64_t);
 template std::vector<Vec<3>> seedPoissonDisk<3>(const Region<3>&, double, std::uint64_t);
+template std::vector<double> voronoiVolumes<2>(const Region<2>&, const std::vector<Vec<2>>&, double,
+                                               int, const std::function<bool(const Vec<2>&)>&);
+template std::vector<double> voronoiVolumes<3>(const Region<3>&, const std::vector<Vec<3>>&, double,
+                                               int, const std::function<bool(const Vec<3>&)>&);
 template std::size_t dropSmallClusters<2>(std::vector<Vec<2>>&, double, std::size_t);
 template std::size_t dropSmallClusters<3>(std::vector<Vec<3>>&, double, std::size_t);
 

@@ -5,6 +5,7 @@
 #include "particles/Region.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace mpm {
@@ -39,6 +40,21 @@ std::vector<Vec<dim>> seedPoissonDisk(const Region<dim>& region, double minDista
 /// ppc < 1 is std::invalid_argument.
 double poissonDiskSpacing(double cellSize, int particlesPerCell, int dim);
 
+/// Voronoi volumes of `points` clipped to `region` [002 §4.5: Poisson-disk points carry their
+/// Voronoi volumes]: V_i = |{x ∈ region : x is nearer to x_i than to any other point, and
+/// within 2 `spacing` of it, and not excluded}|, by midpoint quadrature on a lattice of about
+/// `samplesPerSpacing` samples per `spacing` along each axis (the lattice divides region.bounds()
+/// exactly, so a box region's volumes sum to its volume to round-off). Ties go to the lower index.
+/// `spacing` is the points' typical distance (the Poisson-disk r); a sample farther than 2 spacing
+/// from every point belongs to none. With 8 samples per spacing a 3D point gets ~900 samples, and
+/// V_i is within ~1 % rms (a few % at the walls) of its exact Voronoi volume. Deterministic for any
+/// thread count (integer sample counts). `excluded` (optional) removes space from every cell, e.g.
+/// the inside of rigid bodies. spacing <= 0 or samplesPerSpacing < 1 is std::invalid_argument.
+template <int dim>
+std::vector<double> voronoiVolumes(const Region<dim>& region, const std::vector<Vec<dim>>& points,
+                                   double spacing, int samplesPerSpacing,
+                                   const std::function<bool(const Vec<dim>&)>& excluded = {});
+
 /// Leave out the groups of fewer than `minCount` points, a group being the points connected
 /// through neighbours at most `link` apart (single linkage): the specks a seeding leaves in
 /// narrow pockets. The order of the kept points is unchanged; returns how many were left out.
@@ -50,6 +66,12 @@ extern template std::vector<Vec<2>> seedRegular<2>(const Region<2>&, const Vec<2
 extern template std::vector<Vec<3>> seedRegular<3>(const Region<3>&, const Vec<3>&, double, int);
 extern template std::vector<Vec<2>> seedPoissonDisk<2>(const Region<2>&, double, std::uint64_t);
 extern template std::vector<Vec<3>> seedPoissonDisk<3>(const Region<3>&, double, std::uint64_t);
+extern template std::vector<double> voronoiVolumes<2>(const Region<2>&, const std::vector<Vec<2>>&,
+                                                      double, int,
+                                                      const std::function<bool(const Vec<2>&)>&);
+extern template std::vector<double> voronoiVolumes<3>(const Region<3>&, const std::vector<Vec<3>>&,
+                                                      double, int,
+                                                      const std::function<bool(const Vec<3>&)>&);
 extern template std::size_t dropSmallClusters<2>(std::vector<Vec<2>>&, double, std::size_t);
 extern template std::size_t dropSmallClusters<3>(std::vector<Vec<3>>&, double, std::size_t);
 

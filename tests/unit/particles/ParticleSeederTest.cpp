@@ -128,5 +128,66 @@ TEST(ParticleSeeder, OutsideBodiesWithoutBodiesIsAnInputError) {
     EXPECT_NE(std::string(e.what()).find("no rigid bodies"), std::string::npos);
 }
 
+/// Seeds the Scene's box [0.1, 0.9]² with Poisson-disk points and the given `volumes`.
+Particles<2> seedPoisson(Scene& s, const std::string& seeding, bool withBody,
+                         const std::string& extra = "") {
+    Particles<2> p;
+    s.materials[0]->declareState(p);
+    ParticleSeeder<2> seeder(s.grid, s.materials, Vec<2>(0, -9.81));
+    if (withBody)
+        seeder.setBodyDistance([](const Vec<2>& x) { return (x - Vec<2>(0.5, 0.5)).norm() - 0.2; });
+    seeder.seed(parse("fines:\n  material: sand\n  region: {type: box, min: [0.1, 0.1], max: "
+                      "[0.9, 0.9]}\n  seeding: {method: poissonDisk, perCell: 4, seed: 3" +
+                          seeding + "}\n" + extra,
+                      "constant/particles"),
+                p);
+    return p;
+}
+
+TEST(ParticleSeeder, VoronoiVolumesGiveEachPointItsCellAndKeepTheMass) {
+    Scene s;
+    const Particles<2> equal = seedPoisson(s, "", false);
+    const Particles<2> cells = seedPoisson(s, ", volumes: voronoi", false);
+    ASSERT_EQ(equal.size(), cells.size());
+    double sum = 0, lo = 1, hi = 0;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        EXPECT_EQ(equal.x[i], cells.x[i]);
+        EXPECT_EQ(cells.volume0[i], cells.volume[i]);
+        EXPECT_DOUBLE_EQ(cells.mass[i], 2000 * cells.volume0[i]);
+        sum += cells.volume0[i];
+        lo = std::min(lo, cells.volume0[i] / equal.volume0[i]);
+        hi = std::max(hi, cells.volume0[i] / equal.volume0[i]);
+    }
+    EXPECT_NEAR(sum, 0.64, 1e-12); // the box's area: the cells tile it
+    EXPECT_LT(lo, 0.9);            // and differ from the equal shares
+    EXPECT_GT(hi, 1.1);
+}
+
+TEST(ParticleSeeder, VoronoiVolumesAroundBodiesLeaveOutTheBodies) {
+    Scene s;
+    const Particles<2> p = seedPoisson(s, ", volumes: voronoi", true, "  outsideBodies: yes\n");
+    double sum = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        sum += p.volume0[i];
+    EXPECT_NEAR(sum, 0.64 - M_PI * 0.04, 1e-3);
+}
+
+TEST(ParticleSeeder, VolumesOtherThanEqualOrVoronoiOrWithRegularSeedingAreInputErrors) {
+    Scene s;
+    InputError e = test::catchInputError([&] { seedPoisson(s, ", volumes: lattice", false); });
+    EXPECT_NE(std::string(e.what()).find("voronoi"), std::string::npos);
+    e = test::catchInputError([&] {
+        Particles<2> p;
+        s.materials[0]->declareState(p);
+        ParticleSeeder<2>(s.grid, s.materials, Vec<2>(0, -9.81))
+            .seed(parse("fines:\n  material: sand\n  region: {type: box, min: [0.1, 0.1], "
+                        "max: [0.9, 0.9]}\n  seeding: {method: regular, volumes: voronoi}\n",
+                        "constant/particles"),
+                  p);
+    });
+    EXPECT_NE(std::string(e.what()).find("only poissonDisk seeding takes `volumes`"),
+              std::string::npos);
+}
+
 } // namespace
 } // namespace mpm
