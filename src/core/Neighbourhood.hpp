@@ -18,4 +18,24 @@ template <int dim, class Fn> void forEachNeighbourOffset(Fn&& fn) {
     }
 }
 
+/// Call f(i) for every integer index i in [lo, hi] (inclusive), lexicographically, x fastest.
+template <int dim, class F> void forEachIndex(const IVec<dim>& lo, const IVec<dim>& hi, F&& f) {
+    for (int d = 0; d < dim; ++d) {
+        if (hi[d] < lo[d]) return;
+    }
+    IVec<dim> i = lo;
+    while (true) {
+        f(static_cast<const IVec<dim>&>(i));
+        int d = 0;
+        for (; d < dim; ++d) {
+            if (i[d] < hi[d]) {
+                ++i[d];
+                break;
+            }
+            i[d] = lo[d];
+        }
+        if (d == dim) return;
+    }
+}
+
 } // namespace mpm

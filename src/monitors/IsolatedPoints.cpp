@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/Log.hpp"
-#include "core/Neighbourhood.hpp"
+#include "core/PointBins.hpp"
 #include "monitors/FunctionObject.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <sstream>
 
 namespace mpm {
@@ -73,38 +71,15 @@ private:
         return x;
     }
 
-    /// Points with no other point within radius_: cells of size r, the 3^dim block around each.
+    /// Points with no other point within radius_: cells of size ≥ r, the 3^dim block around each.
     std::size_t countIsolated(const std::vector<Vec<dim>>& x) const {
-        using Key = std::array<long long, dim>;
-        const auto cellOf = [&](const Vec<dim>& y) {
-            Key k;
-            for (int d = 0; d < dim; ++d)
-                k[d] = static_cast<long long>(std::floor(y[d] / radius_));
-            return k;
-        };
-        std::map<Key, std::vector<std::size_t>> cells;
-        for (std::size_t i = 0; i < x.size(); ++i)
-            cells[cellOf(x[i])].push_back(i);
+        const PointBins<dim> bins(x, radius_);
         const double r2 = radius_ * radius_;
         std::size_t isolated = 0;
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            const Key c = cellOf(x[i]);
-            bool found = false;
-            forEachNeighbourOffset<dim>([&](const IVec<dim>& o) {
-                if (found) return;
-                Key k = c;
-                for (int d = 0; d < dim; ++d)
-                    k[d] += o[d];
-                const auto it = cells.find(k);
-                if (it == cells.end()) return;
-                for (const std::size_t j : it->second)
-                    if (j != i && (x[j] - x[i]).squaredNorm() <= r2) {
-                        found = true;
-                        return;
-                    }
+        for (std::size_t i = 0; i < x.size(); ++i)
+            isolated += !bins.anyNear(x[i], 1, [&](std::size_t j) {
+                return j != i && (x[j] - x[i]).squaredNorm() <= r2;
             });
-            isolated += !found;
-        }
         return isolated;
     }
 

@@ -2,13 +2,12 @@
 #include "particles/Seeding.hpp"
 #include "core/Neighbourhood.hpp"
 #include "core/Parallel.hpp"
+#include "core/PointBins.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
-#include <map>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -16,26 +15,6 @@
 namespace mpm {
 
 namespace {
-
-/// Call f(i) for every integer index i in [lo, hi] (inclusive), lexicographically, x fastest.
-template <int dim, class F> void forEachIndex(const IVec<dim>& lo, const IVec<dim>& hi, F&& f) {
-    for (int d = 0; d < dim; ++d) {
-        if (hi[d] < lo[d]) return;
-    }
-    IVec<dim> i = lo;
-    while (true) {
-        f(static_cast<const IVec<dim>&>(i));
-        int d = 0;
-        for (; d < dim; ++d) {
-            if (i[d] < hi[d]) {
-                ++i[d];
-                break;
-            }
-            i[d] = lo[d];
-        }
-        if (d == dim) return;
-    }
-}
 
 /// Uniform double in [0, 1) from the top 53 bits of one mt19937_64 draw: u = (w >> 11) 2^-53.
 /// Unlike std::uniform_real_distribution this is the same on every standard library.
@@ -237,7 +216,7 @@ std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::s
     if (!(link > 0.0)) throw std::invalid_argument("dropSmallClusters: link must be > 0");
     const std::size_t n = points.size();
     if (minCount <= 1 || n == 0) return 0;
-    // Union–find over the pairs closer than `link`, found through a hash of cells of size link.
+    // Union–find over the pairs closer than `link`, found through cells of size link.
     std::vector<std::size_t> parent(n);
     for (std::size_t i = 0; i < n; ++i)
         parent[i] = i;
@@ -246,29 +225,12 @@ std::size_t dropSmallClusters(std::vector<Vec<dim>>& points, double link, std::s
             i = parent[i] = parent[parent[i]];
         return i;
     };
-    using Key = std::array<std::int64_t, dim>;
-    auto cellOf = [&](const Vec<dim>& x) {
-        Key k;
-        for (int d = 0; d < dim; ++d)
-            k[d] = static_cast<std::int64_t>(std::floor(x[d] / link));
-        return k;
-    };
-    std::map<Key, std::vector<std::size_t>> cells;
-    for (std::size_t i = 0; i < n; ++i)
-        cells[cellOf(points[i])].push_back(i);
+    const PointBins<dim> bins(points, link);
     const double link2 = link * link;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Key c = cellOf(points[i]);
-        forEachNeighbourOffset<dim>([&](const IVec<dim>& o) {
-            Key k;
-            for (int d = 0; d < dim; ++d)
-                k[d] = c[d] + o[d];
-            if (const auto it = cells.find(k); it != cells.end())
-                for (std::size_t j : it->second)
-                    if (j > i && (points[j] - points[i]).squaredNorm() <= link2)
-                        parent[root(j)] = root(i);
+    for (std::size_t i = 0; i < n; ++i)
+        bins.forEachNear(points[i], 1, [&](std::size_t j) {
+            if (j > i && (points[j] - points[i]).squaredNorm() <= link2) parent[root(j)] = root(i);
         });
-    }
     std::vector<std::size_t> size(n, 0);
     for (std::size_t i = 0; i < n; ++i)
         ++size[root(i)];
@@ -292,60 +254,18 @@ std::vector<double> voronoiVolumes(const Region<dim>& region, const std::vector<
     const Eigen::AlignedBox<double, dim> box = region.bounds();
     if (n == 0 || box.isEmpty()) return volume;
 
-    // Points binned in cells of size `spacing` over the bounds (CSR: start, then indices): the
-    // 3^dim block around a sample's cell holds every point within `spacing` of it, the 5^dim
-    // block every point within 2 `spacing`.
-    IVec<dim> cells;
-    for (int d = 0; d < dim; ++d)
-        cells[d] = std::max(1, static_cast<int>(std::ceil(box.sizes()[d] / spacing)));
-    const auto cellOf = [&](const Vec<dim>& x) {
-        IVec<dim> c;
-        for (int d = 0; d < dim; ++d)
-            c[d] = std::clamp(static_cast<int>(std::floor((x[d] - box.min()[d]) / spacing)), 0,
-                              cells[d] - 1);
-        return c;
-    };
-    const auto linear = [&](const IVec<dim>& c) {
-        std::size_t k = 0;
-        for (int d = dim - 1; d >= 0; --d)
-            k = k * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(c[d]);
-        return k;
-    };
-    std::size_t cellCount = 1;
-    for (int d = 0; d < dim; ++d)
-        cellCount *= static_cast<std::size_t>(cells[d]);
-    std::vector<std::size_t> start(cellCount + 1, 0);
-    std::vector<std::size_t> cellIndex(n);
-    for (std::size_t i = 0; i < n; ++i)
-        ++start[(cellIndex[i] = linear(cellOf(points[i]))) + 1];
-    for (std::size_t k = 0; k < cellCount; ++k)
-        start[k + 1] += start[k];
-    std::vector<std::size_t> members(n);
-    {
-        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < n; ++i)
-            members[fill[cellIndex[i]]++] = i;
-    }
-    // Nearest point within `ring` cells of c (lowest index on a tie), or n if none is within
-    // ring · spacing, the distance up to which the block is complete.
-    const auto nearest = [&](const Vec<dim>& x, const IVec<dim>& c, int ring) {
-        IVec<dim> lo;
-        IVec<dim> hi;
-        for (int d = 0; d < dim; ++d) {
-            lo[d] = std::max(0, c[d] - ring);
-            hi[d] = std::min(cells[d] - 1, c[d] + ring);
-        }
+    // The nearest point within `spacing` (the 3^dim block of cells), else within 2 `spacing`
+    // (the 5^dim block); a sample farther than that from every point belongs to none.
+    const PointBins<dim> bins(points, spacing, box);
+    // Nearest point within ring · spacing of x (lowest index on a tie), or n if there is none.
+    const auto nearest = [&](const Vec<dim>& x, int ring) {
         std::size_t best = n;
         double best2 = ring * spacing * ring * spacing;
-        forEachIndex<dim>(lo, hi, [&](const IVec<dim>& b) {
-            const std::size_t k = linear(b);
-            for (std::size_t m = start[k]; m < start[k + 1]; ++m) {
-                const std::size_t j = members[m];
-                const double q = (points[j] - x).squaredNorm();
-                if (q < best2 || (q == best2 && j < best)) {
-                    best2 = q;
-                    best = j;
-                }
+        bins.forEachNear(x, ring, [&](std::size_t j) {
+            const double q = (points[j] - x).squaredNorm();
+            if (q < best2 || (q == best2 && j < best)) {
+                best2 = q;
+                best = j;
             }
         });
         return best;
@@ -376,9 +296,8 @@ std::vector<double> voronoiVolumes(const Region<dim>& region, const std::vector<
                 rest /= samples[d];
             }
             if (!region.contains(x) || (excluded && excluded(x))) continue;
-            const IVec<dim> c = cellOf(x);
-            std::size_t j = nearest(x, c, 1);
-            if (j == n) j = nearest(x, c, 2);
+            std::size_t j = nearest(x, 1);
+            if (j == n) j = nearest(x, 2);
             if (j < n) ++local[j];
         }
 #pragma omp critical
