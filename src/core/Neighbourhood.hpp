@@ -5,19 +5,6 @@
 
 namespace mpm {
 
-/// Visit the 3^dim offsets o ∈ {−1, 0, 1}^dim of a cell's neighbourhood (itself included), the
-/// first axis fastest: fn(o).
-template <int dim, class Fn> void forEachNeighbourOffset(Fn&& fn) {
-    IVec<dim> o = IVec<dim>::Constant(-1);
-    while (true) {
-        fn(static_cast<const IVec<dim>&>(o));
-        int d = 0;
-        while (d < dim && ++o[d] > 1)
-            o[d++] = -1;
-        if (d == dim) return;
-    }
-}
-
 /// Call f(i) for every integer index i in [lo, hi] (inclusive), lexicographically, x fastest.
 template <int dim, class F> void forEachIndex(const IVec<dim>& lo, const IVec<dim>& hi, F&& f) {
     for (int d = 0; d < dim; ++d) {
@@ -36,6 +23,12 @@ template <int dim, class F> void forEachIndex(const IVec<dim>& lo, const IVec<di
         }
         if (d == dim) return;
     }
+}
+
+/// Visit the 3^dim offsets o ∈ {−1, 0, 1}^dim of a cell's neighbourhood (itself included), the
+/// first axis fastest: fn(o).
+template <int dim, class Fn> void forEachNeighbourOffset(Fn&& fn) {
+    forEachIndex<dim>(IVec<dim>::Constant(-1), IVec<dim>::Constant(1), fn);
 }
 
 } // namespace mpm
