@@ -98,8 +98,7 @@ void Coupling<dim>::forParticlesNear(const RigidBody<dim>& body, const Vec<dim>&
 template <int dim>
 void Coupling<dim>::computeForces(Particles<dim>& p,
                                   const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                                  const std::vector<double>& wave,
-                                  const std::vector<double>& criticalDensity,
+                                  const std::vector<double>& wave, const std::vector<int>* gasified,
                                   const BlockSort<dim>& sort, const Grid<dim>& grid, double dt) {
     gridPoints_.clear();
     gridForces_.clear();
@@ -142,11 +141,9 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
             const Index i = contacts_[k].particle;
             body.addForce(-forces_[k],
                           law.contactPoint(imageOf(images, p.x[i], body), contacts_[k]));
-            const int m = p.material[i];
-            const bool gasified =
-                !law.gasifiedOnGrid() && p.mass[i] < criticalDensity[m] * p.volume[i];
-            (gasified ? localPoints_ : gridPoints_).push_back(i);
-            (gasified ? localForces_ : gridForces_).push_back(forces_[k]);
+            const bool local = !law.gasifiedOnGrid() && gasified != nullptr && (*gasified)[i];
+            (local ? localPoints_ : gridPoints_).push_back(i);
+            (local ? localForces_ : gridForces_).push_back(forces_[k]);
         }
         numContacts_ += static_cast<Index>(contacts_.size());
         nearOf_.resize(bodies.size());

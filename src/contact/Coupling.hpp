@@ -59,10 +59,11 @@ public:
     static double radius(double v0) { return dim == 3 ? std::cbrt(v0) : std::sqrt(v0); }
 
     /// Find contacts and their forces, and add −f and torques to the bodies (after their
-    /// clearForces()). `wave[m]` and `criticalDensity[m]` are per material.
+    /// clearForces()). `wave[m]` is per material; `gasified` the points' trans-phase
+    /// state (PhaseDensity.hpp: 1 for a gasified point), null without trans-phase.
     void computeForces(Particles<dim>& p,
                        const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies,
-                       const std::vector<double>& wave, const std::vector<double>& criticalDensity,
+                       const std::vector<double>& wave, const std::vector<int>* gasified,
                        const BlockSort<dim>& sort, const Grid<dim>& grid, double dt);
 
     /// Points (dense) and their coupling forces to scatter into the grid this step.

@@ -11,7 +11,7 @@ template <int dim>
 CouplingLaw<dim>::CouplingLaw(const Dictionary& dict, double h)
     : h_(h), mu_(dict.getScalarOr("friction", 0.0, Bounds::nonNegative())),
       slipFraction_(dict.getScalarOr("slipThreshold", 0.01, Bounds::positive())),
-      gasifiedOnGrid_(dict.getWordOr("gasifiedPoints", "local", {"local", "grid"}) == "grid") {}
+      gasifiedOnGrid_(dict.getWordOr("gasifiedPoints", "grid", {"grid", "local"}) == "grid") {}
 
 template <int dim>
 Vec<dim> CouplingLaw<dim>::frictionForce(const Contact<dim>& c, double fn, double dt,

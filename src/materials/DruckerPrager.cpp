@@ -1,17 +1,46 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/DruckerPrager.hpp"
 
+#include "core/Log.hpp"
+
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
 namespace mpm {
 
-ConeFit readConeFit(const Dictionary& dict, ElasticLaw law) {
-    const std::string def = law == ElasticLaw::hencky ? "compression" : "planeStrain";
-    return dict.getWordOr("coneFit", def, {"compression", "planeStrain"}) == "compression"
+ConeFit readConeFit(const Dictionary& dict, int dim) {
+    const std::string def = dim == 2 ? "planeStrain" : "compression";
+    return dict.getWordOr("coneFit", def, {"planeStrain", "compression"}) == "compression"
                ? ConeFit::compression
                : ConeFit::planeStrain;
+}
+
+const char* coneFitName(ConeFit fit) {
+    return fit == ConeFit::compression ? "compression" : "planeStrain";
+}
+
+std::string describeCone(const std::string& symbol, double mu) {
+    std::ostringstream os;
+    os << std::setprecision(4) << symbol << " = " << mu << std::setprecision(3)
+       << " (φ = " << planeStrainAngle(mu) << "° in plane strain, " << compressionAngle(mu)
+       << "° in triaxial compression)";
+    return os.str();
+}
+
+void warnConeFit(const Dictionary& dict, ConeFit fit, int dim, double angleDegrees) {
+    const bool mismatch = (dim == 2) == (fit == ConeFit::compression);
+    if (!mismatch) return;
+    const double mu = coneFriction(fit, angleDegrees);
+    const double acts = dim == 2 ? planeStrainAngle(mu) : compressionAngle(mu);
+    warning() << dict.fileName() << ':' << dict.line("coneFit") << ": coneFit: " << coneFitName(fit)
+              << " in a " << dim << "D run: φ = " << angleDegrees
+              << "° gives μ = " << std::setprecision(4) << mu
+              << ", which acts as φ = " << std::setprecision(3) << acts << "° "
+              << (dim == 2 ? "in plane strain" : "in triaxial compression") << "; the " << dim
+              << "D default '" << (dim == 2 ? "planeStrain" : "compression")
+              << "' keeps φ (docs/settingsGuide.md)\n";
 }
 
 double coneFriction(ConeFit fit, double angleDegrees) {
@@ -20,9 +49,9 @@ double coneFriction(ConeFit fit, double angleDegrees) {
 }
 
 DruckerPragerPlasticity::DruckerPragerPlasticity(const Dictionary& dict, const ElasticConstants& c,
-                                                 ElasticLaw law)
+                                                 ElasticLaw law, int dim)
     : phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
-      fit_(readConeFit(dict, law)),
+      fit_(readConeFit(dict, dim)),
       psi_(dict.getScalarOr("dilationAngle", 0.0, Bounds::closed(0.0, phi_))),
       cohesion_(dict.getScalarOr("cohesion", 0.0, Bounds::nonNegative())),
       flow_{coneFriction(fit_, phi_), coneFriction(fit_, psi_), c.G, c.K} {
@@ -42,6 +71,18 @@ DruckerPragerPlasticity::DruckerPragerPlasticity(const Dictionary& dict, const E
     }
     cutoff_.tauC =
         cutoff_.sigmaT == apex ? 0.0 : std::max(0.0, flow_.k - flow_.mu * cutoff_.sigmaT);
+    warnConeFit(dict, fit_, dim, phi_);
+}
+
+std::string DruckerPragerPlasticity::describe() const {
+    std::ostringstream os;
+    os << "    Drucker-Prager, cone fit " << coneFitName(fit_) << ": "
+       << describeCone("mu", flow_.mu) << "\n    dilatancy " << describeCone("beta", flow_.beta)
+       << '\n';
+    if (cohesion_ > 0.0)
+        os << "    cohesion " << cohesion_ << " Pa: k = " << flow_.k << " Pa, tension cut-off "
+           << cutoff_.sigmaT << " Pa\n";
+    return os.str();
 }
 
 template class ElastoPlastic<2, HenckyLaw, DruckerPragerPlasticity>;

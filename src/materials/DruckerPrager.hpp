@@ -3,6 +3,8 @@
 
 #include "materials/ElastoPlastic.hpp"
 
+#include <string>
+
 namespace mpm {
 
 /// The friction angle → cone coefficient fit of a Drucker–Prager cone (key `coneFit`).
@@ -11,11 +13,19 @@ enum class ConeFit {
     planeStrain  ///< Mohr–Coulomb in plane strain [001 Eq. 35]
 };
 
-/// Read `coneFit` (compression | planeStrain); the default follows the elastic law's source:
-/// compression with Hencky [000], planeStrain with hypoelastic [001].
-ConeFit readConeFit(const Dictionary& dict, ElasticLaw law);
+/// Read `coneFit` (compression | planeStrain); the default follows the run's dimension:
+/// planeStrain in 2D (plane strain [001 Eq. 35]), compression in 3D ([000 Eq. 8]).
+ConeFit readConeFit(const Dictionary& dict, int dim);
 /// μ (or q_φ) of an angle [deg] by `fit`.
 double coneFriction(ConeFit fit, double angleDegrees);
+/// Warn when `coneFit` was set to the fit of the other dimension: a friction angle φ [deg] then
+/// acts as a different angle in this run (2D with compression: φ = 30° acts as 49°).
+void warnConeFit(const Dictionary& dict, ConeFit fit, int dim, double angleDegrees);
+/// "μ = 0.4629 (φ = 30° in plane strain, 23.7° in triaxial compression)": a cone coefficient
+/// and the Mohr–Coulomb angles it amounts to.
+std::string describeCone(const std::string& symbol, double mu);
+/// The word of a cone fit.
+const char* coneFitName(ConeFit fit);
 
 /// Rate-independent Drucker–Prager plasticity (`type: druckerPrager`), the plasticity of
 /// ElastoPlastic: shear surface f = q − μ p − k ≤ 0 [000 Eq. 6–8], [001 Eq. 31b] with
@@ -28,7 +38,10 @@ class DruckerPragerPlasticity {
 public:
     static constexpr bool plastic = true;
 
-    DruckerPragerPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law);
+    DruckerPragerPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law,
+                            int dim);
+    /// The derived constants, for the log (Material::describe).
+    std::string describe() const;
 
     DruckerPragerFlow flow(double /*dt*/) const { return flow_; }
     TensionCutoff cutoff() const { return cutoff_; }

@@ -5,9 +5,11 @@
 #include "materials/HenckyLaw.hpp"
 #include "materials/HypoelasticLaw.hpp"
 #include "materials/Material.hpp"
+#include "transfers/PhaseDensity.hpp"
 
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
 
 // Materials as a composition: elastic law × plastic flow × options.
@@ -34,7 +36,9 @@ namespace mpm {
 struct NoPlasticity {
     static constexpr bool plastic = false;
 
-    NoPlasticity(const Dictionary& /*dict*/, const ElasticConstants& /*c*/, ElasticLaw /*law*/) {}
+    NoPlasticity(const Dictionary& /*dict*/, const ElasticConstants& /*c*/, ElasticLaw /*law*/,
+                 int /*dim*/) {}
+    std::string describe() const { return {}; }
     NoFlow flow(double /*dt*/) const { return {}; }
     TensionCutoff cutoff() const { return {}; }
     /// ν/(1 − ν), the elastic coefficient of lateral earth pressure at rest.
@@ -47,7 +51,7 @@ struct NoPlasticity {
 template <int dim, class Law, class Plasticity> class ElastoPlastic : public Material<dim> {
 public:
     ElastoPlastic(const Dictionary& dict, const std::string& name)
-        : Material<dim>(dict, name), c_(dict), plasticity_(dict, c_, Law::kind) {
+        : Material<dim>(dict, name), c_(dict), plasticity_(dict, c_, Law::kind, dim) {
         if constexpr (Plasticity::plastic) {
             const bool transPhase = dict.getBoolOr("transPhase", true);
             const double rhoC =
@@ -58,11 +62,23 @@ public:
 
     /// √(M/ρ₀) [m/s], M = K + 4G/3.
     double waveSpeed() const override { return std::sqrt(c_.M / this->density()); }
+    /// With the trans-phase relation: the shared fields `phaseDensity` and `gasified`
+    /// (transfers/PhaseDensity.hpp).
+    void declareState(Particles<dim>& p) override {
+        if (rhoC_ > 0.0) transPhaseFields(p);
+    }
     void initialise(Particles<dim>& p, Index i, const Mat3& sigma0) const override {
         Law::initialise(c_, p, i, sigma0);
+        if (const auto f = findTransPhaseFields(p); f && rhoC_ > 0.0)
+            p.scalar(f->density)[i] = p.mass[i] / p.volume[i]; // a seeded point is dense
     }
     Index updateStress(Particles<dim>& p, const std::vector<Index>& ids, double dt) const override {
-        return Law::update(p, ids, dt, c_, rhoC_, plasticity_.flow(dt), plasticity_.cutoff());
+        TransPhaseRule phase{rhoC_, nullptr, p.mass.data(), p.volume.data(), nullptr};
+        if (const auto f = findTransPhaseFields(p); f && rhoC_ > 0.0) {
+            phase.density = p.scalar(f->density).data();
+            phase.gasified = p.flag(f->gasified).data();
+        }
+        return Law::update(p, ids, dt, c_, phase, plasticity_.flow(dt), plasticity_.cutoff());
     }
     double defaultK0() const override { return plasticity_.defaultK0(c_); }
     double strainEnergy(const Particles<dim>& p, Index i) const override {
@@ -74,6 +90,21 @@ public:
             Law::template strainEnergies<dim>(c_, p, ids, out);
         else
             Material<dim>::strainEnergies(p, ids, out);
+    }
+    std::string describe() const override {
+        std::ostringstream os;
+        os << Material<dim>::describe() << "    "
+           << (Law::kind == ElasticLaw::hencky ? "Hencky" : "hypoelastic (Jaumann)")
+           << " elasticity: K = " << c_.K << " Pa, G = " << c_.G << " Pa\n"
+           << plasticity_.describe();
+        if constexpr (Plasticity::plastic) {
+            os << "    K0 of a geostatic initial stress (1 - sin phi) = " << defaultK0() << '\n';
+            if (rhoC_ > 0.0)
+                os << "    trans-phase: critical density " << rhoC_ << " kg/m3\n";
+            else
+                os << "    trans-phase: off\n";
+        }
+        return os.str();
     }
     /// ρ_c [kg/m³]; 0 for elastic materials and with transPhase: false.
     double criticalDensity() const override { return rhoC_; }

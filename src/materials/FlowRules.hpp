@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/Types.hpp"
+
 #include <cmath>
 
 // Per-step yield/flow functors shared by the elastic laws' return maps (HenckyReturnMap.hpp,
@@ -42,6 +44,48 @@ inline double planeStrainFrictionCoefficient(double angleDegrees) {
 inline double planeStrainCohesionCoefficient(double cohesion, double angleDegrees) {
     const double t = std::tan(angleDegrees * degree);
     return 3.0 * cohesion / std::sqrt(9.0 + 12.0 * t * t);
+}
+
+/// The trans-phase relation of a step [000 Eq. 10]: a point is gasified (grains out of
+/// contact: no stress, elastic strain reset) while the density ρ̄_p of its neighbourhood (the
+/// `phaseDensity` field, transfers/PhaseDensity.hpp) is below ρ_c; a loose region is compacted
+/// back to ρ_c under its own weight before it carries load, and all its points start again
+/// stress-free together. The state is written to the `gasified` flag (ParaView, the coupling).
+/// Where no neighbourhood density was computed (a material driven on its own, as in the unit
+/// tests) the point's own m_p/V_p [000 Eq. 18] stands for it. ρ_c = 0: off (never gasified).
+struct TransPhaseRule {
+    double rhoC = 0.0;               ///< critical density ρ_c [kg/m³] (0: off)
+    const double* density = nullptr; ///< ρ̄_p per particle [kg/m³], or null: m_p/V_p
+    const double* mass = nullptr;    ///< m_p (for m_p/V_p)
+    const double* volume = nullptr;  ///< V_p (for m_p/V_p)
+    int* gasified = nullptr;         ///< the state flag per particle (1: gasified), or null
+
+    bool on() const { return gasified != nullptr; }
+    /// ρ̄_p < ρ_c (false when off).
+    bool gas(Index i) const {
+        return rhoC > 0.0 && (density != nullptr ? density[i] : mass[i] / volume[i]) < rhoC;
+    }
+    /// gas(i), also stored in the flag.
+    bool update(Index i) const {
+        const bool g = gas(i);
+        if (gasified != nullptr) gasified[i] = g ? 1 : 0;
+        return g;
+    }
+};
+
+/// The Mohr–Coulomb friction angle [deg] whose plane-strain fit [001 Eq. 35] is the cone
+/// coefficient μ: tan φ = 3μ/√(9 − 12μ²) (90° when 12μ² ≥ 9: steeper than any plane-strain
+/// Mohr–Coulomb surface).
+inline double planeStrainAngle(double mu) {
+    const double d = 9.0 - 12.0 * mu * mu;
+    return d > 0.0 ? std::atan(3.0 * mu / std::sqrt(d)) / degree : 90.0;
+}
+
+/// The Mohr–Coulomb friction angle [deg] whose compression-corner fit [000 Eq. 8] is μ:
+/// sin φ = 3μ/(2√3 + μ) (90° beyond μ = √3).
+inline double compressionAngle(double mu) {
+    const double s = 3.0 * mu / (2.0 * std::sqrt(3.0) + mu);
+    return s < 1.0 ? std::asin(s) / degree : 90.0;
 }
 
 /// No plastic flow: the elastic laws' plain update.

@@ -86,13 +86,13 @@ struct HenckyLaw {
     /// plasticity is cohesionless: the tension cut-off must be the apex (asserted).
     template <int dim, class Flow>
     static Index update(Particles<dim>& p, const std::vector<Index>& ids, double dt,
-                        const ElasticConstants& c, double rhoC, const Flow& flow,
+                        const ElasticConstants& c, const TransPhaseRule& phase, const Flow& flow,
                         [[maybe_unused]] const TensionCutoff& cutoff) {
         assert(cutoff.sigmaT == 0.0 && cutoff.tauC == 0.0);
         if constexpr (std::is_same_v<Flow, NoFlow>)
             return elasticUpdate(p, ids, dt, c);
         else
-            return henckyReturnMapUpdate(p, ids, dt, c, rhoC, flow);
+            return henckyReturnMapUpdate(p, ids, dt, c, phase, flow);
     }
 
     /// Elastic update: bᵉ ← f bᵉ fᵀ, σ = τ(bᵉ) V⁰/V. Returns the first particle whose stress is

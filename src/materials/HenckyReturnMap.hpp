@@ -52,7 +52,8 @@
 // which for ψ = 0 (β = 0) is exactly ε_v ≥ 0: the hydrostatic axis. μ(I) flows are isochoric
 // (β = 0), so theirs is ε_v ≥ 0 too.
 //
-// Trans-phase relation [000 Eq. 10]: when ρ_p = m_p/V_p < ρ_c [000 Eq. 18] the point is
+// Trans-phase relation [000 Eq. 10]: when the density ρ̄_p of the point's neighbourhood
+// (PhaseDensity.hpp; the point's own m_p/V_p in [000 Eq. 18]) is below ρ_c the point is
 // gasified: zero stress and bᵉ = 1 (it starts stress-free when it re-compacts); its plastic
 // strain is unchanged.
 
@@ -62,12 +63,13 @@ namespace mpm {
 /// yield/flow functor `Flow` (chosen at compile time: no per-particle virtual call or option
 /// branch). Flow provides `beta` and `multiplier(q, p, jInv)`. Particles go through in batches of
 /// 8 so that the strains, the return and exp 2ε (only in a batch with a plastic point) vectorise
-/// across particles, as in HenckyLaw::elasticUpdate. ρ_c = 0 turns the trans-phase relation off.
+/// across particles, as in HenckyLaw::elasticUpdate. `phase` gasifies points (off: never).
 /// Elastic points get exactly HenckyLaw::elasticUpdate's bᵉ and σ. Returns the first particle
 /// whose state is not finite, or -1.
 template <int dim, class Flow>
 Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
-                            const ElasticConstants& c, double rhoC, const Flow& flow) {
+                            const ElasticConstants& c, const TransPhaseRule& phase,
+                            const Flow& flow) {
     constexpr int Lanes = 8;
     const Index n = static_cast<Index>(ids.size());
     const Index batches = (n + Lanes - 1) / Lanes;
@@ -79,9 +81,9 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
         HenckyBatch<Lanes> h;
         h.trial(p, ids, b * Lanes, dt);
         const double* jInv = h.jInv;
-        alignas(64) double rho[Lanes]; // m/V [kg/m³], for the trans-phase relation
+        alignas(64) double gasLane[Lanes]; // 1: gasified (TransPhaseRule)
         for (int l = 0; l < Lanes; ++l)
-            rho[l] = p.mass[h.idx[l]] / p.volume[h.idx[l]];
+            gasLane[l] = phase.gas(h.idx[l]) ? 1.0 : 0.0;
         alignas(64) double eps[6][Lanes], twoEps[6][Lanes], dGamma[Lanes];
         alignas(64) double state[Lanes]; // 0: elastic (trial bᵉ), 1: plastic, 2: stress-free
         h.template strain<dim>(eps);
@@ -97,7 +99,7 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
             const double m = flow.multiplier(q, pk, jInv[l]);
             const double dg = m > 0.0 ? m : 0.0;
             const bool plastic = dg > 0.0;
-            const bool gas = rho[l] < rhoC;
+            const bool gas = gasLane[l] != 0.0;
             // Apex region ε_v ≥ √2 β |ε̂_tr| (see above; ε_v ≥ 0 for β = 0).
             const bool stressFree = gas | (ev >= sqrt2 * flow.beta * dn);
             // ε = ε_v/3 1 + (|ε̂| − Δγ/√2) n after a return, the trial ε if elastic, 0 at the apex.
@@ -137,6 +139,7 @@ Index henckyReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, do
                 p.stress[i] = HenckyBatch<Lanes>::tensor(sig, l);
             }
             p.plasticStrain[i] += dGamma[l];
+            if (phase.on()) phase.gasified[i] = gasLane[l] != 0.0 ? 1 : 0;
             // The trial bᵉ catches a non-finite L also where the point ends stress-free (summed
             // from the lanes, not re-read from the tensors just stored).
             double sum = dGamma[l];

@@ -43,15 +43,15 @@ struct HypoelasticLaw {
     }
 
     /// Advance the particles `ids` over dt with the flow rule `flow` (NoFlow: elastic), the
-    /// tension cut-off `cutoff` and the trans-phase density ρ_c (0: off).
+    /// tension cut-off `cutoff` and the trans-phase relation `phase`.
     template <int dim, class Flow>
     static Index update(Particles<dim>& p, const std::vector<Index>& ids, double dt,
-                        const ElasticConstants& c, double rhoC, const Flow& flow,
+                        const ElasticConstants& c, const TransPhaseRule& phase, const Flow& flow,
                         const TensionCutoff& cutoff) {
         if constexpr (std::is_same_v<Flow, NoFlow>)
             return elasticUpdate(p, ids, dt, c);
         else
-            return hypoelasticReturnMapUpdate(p, ids, dt, c, rhoC, flow, cutoff);
+            return hypoelasticReturnMapUpdate(p, ids, dt, c, phase, flow, cutoff);
     }
 
     /// Elastic update σ ← σ + Δt σ̇. Returns the first particle whose stress is not finite,

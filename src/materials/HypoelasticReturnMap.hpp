@@ -64,13 +64,13 @@ inline Mat3 jaumannTrialStress(const ElasticConstants& c, const Mat3& L, const M
 }
 
 /// Advance σ and the plastic strain of `ids` over dt by the return map above with the yield/flow
-/// functor `Flow` (chosen at compile time) and the cut-off `cut`; ρ_c = 0 turns the trans-phase
-/// relation off. Elastic points get exactly the hypoelastic stress. Returns the first particle
+/// functor `Flow` (chosen at compile time) and the cut-off `cut`; `phase` gasifies points (off:
+/// never). Elastic points get exactly the hypoelastic stress. Returns the first particle
 /// whose state is not finite, or -1.
 template <int dim, class Flow>
 Index hypoelasticReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
-                                 const ElasticConstants& c, double rhoC, const Flow& flow,
-                                 const TensionCutoff& cut) {
+                                 const ElasticConstants& c, const TransPhaseRule& phase,
+                                 const Flow& flow, const TensionCutoff& cut) {
     const Index n = static_cast<Index>(ids.size());
     const double G = c.G, Kbeta = c.K * flow.beta;
     Index bad = n;
@@ -85,7 +85,7 @@ Index hypoelasticReturnMapUpdate(Particles<dim>& p, const std::vector<Index>& id
         const double fs = flow.yield(tau, -sm);
         double dGamma = 0.0;
         Mat3 sig; // built in registers, stored once (the check does not re-read the store)
-        if (p.mass[i] / p.volume[i] < rhoC) {
+        if (phase.update(i)) {
             sig.setZero(); // gasified
             // A gas point keeps its volume only: F ← J^(1/dim) I, the same det F. Its F would
             // otherwise shear without bound (entries of 10⁹ at J ≈ 100, where det F rounds to

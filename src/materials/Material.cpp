@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/Material.hpp"
 
+#include <sstream>
+
 namespace mpm {
 
 ElasticConstants::ElasticConstants(double youngs, double poisson) : E(youngs), nu(poisson) {
@@ -17,6 +19,12 @@ ElasticConstants::ElasticConstants(const Dictionary& dict)
 template <int dim>
 Material<dim>::Material(const Dictionary& dict, std::string name)
     : name_(std::move(name)), density_(dict.getScalar("density", Bounds::positive())) {}
+
+template <int dim> std::string Material<dim>::describe() const {
+    std::ostringstream os;
+    os << "    density " << density_ << " kg/m3, P-wave speed " << waveSpeed() << " m/s\n";
+    return os.str();
+}
 
 template <int dim>
 std::unique_ptr<Material<dim>> Material<dim>::create(const Dictionary& dict,

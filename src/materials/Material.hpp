@@ -98,6 +98,10 @@ public:
         return 0.0;
     }
 
+    /// The constants this model derives from its keys, for the log at start: indented lines
+    /// (the base: ρ₀ and the wave speed).
+    virtual std::string describe() const;
+
     /// Build the material named `name` from its dictionary (`type:` picks the model).
     static std::unique_ptr<Material> create(const Dictionary& dict, const std::string& name);
     /// Every material of constant/materials, in file order (none is an InputError).

@@ -2,16 +2,28 @@
 #include "materials/MuI.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace mpm {
 
-MuIPlasticity::MuIPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law)
+MuIPlasticity::MuIPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw /*law*/,
+                             int dim)
     : G_(c.G), phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
-      fit_(readConeFit(dict, law)), muS_(coneFriction(fit_, phi_)),
+      fit_(readConeFit(dict, dim)), muS_(coneFriction(fit_, phi_)),
       mu2_(coneFriction(fit_, dict.getScalar("frictionAngle2", {phi_, 90.0, false, false}))),
       I0_(dict.getScalarOr("I0", 0.278, Bounds::positive())),
       grainDiameter_(dict.getScalar("grainDiameter", Bounds::positive())),
-      grainDensity_(dict.getScalar("grainDensity", Bounds::positive())) {}
+      grainDensity_(dict.getScalar("grainDensity", Bounds::positive())) {
+    warnConeFit(dict, fit_, dim, phi_);
+}
+
+std::string MuIPlasticity::describe() const {
+    std::ostringstream os;
+    os << "    mu(I), cone fit " << coneFitName(fit_) << ": " << describeCone("mu_s", muS_)
+       << "\n    " << describeCone("mu_2", mu2_) << "\n    I0 = " << I0_ << ", grain diameter "
+       << grainDiameter_ << " m, grain density " << grainDensity_ << " kg/m3\n";
+    return os.str();
+}
 
 MuIFlow MuIPlasticity::flow(double dt) const {
     return MuIFlow{muS_, mu2_ - muS_, I0_, G_, grainDiameter_ * std::sqrt(grainDensity_) / dt};

@@ -17,7 +17,9 @@ class MuIPlasticity {
 public:
     static constexpr bool plastic = true;
 
-    MuIPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law);
+    MuIPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw law, int dim);
+    /// The derived constants, for the log (Material::describe).
+    std::string describe() const;
 
     /// The flow functor for a step dt > 0 (μ(I), plastic multiplier).
     MuIFlow flow(double dt) const;

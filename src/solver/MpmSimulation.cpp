@@ -38,6 +38,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         criticalDensityOf_.push_back(m->criticalDensity());
         m->declareState(particles_);
     }
+    logDerivedConstants();
     if (cs.exists("constant/velocityConstraints")) {
         std::vector<std::string> names;
         for (const auto& m : materials_)
@@ -64,11 +65,35 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
             fBar_->setNodalFold(
                 [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
     }
+    if (std::any_of(materials_.begin(), materials_.end(),
+                    [](const auto& m) { return m->criticalDensity() > 0.0; })) {
+        phaseDensity_ = std::make_unique<PhaseDensity<dim>>(transPhaseFields(particles_).density);
+        if (bc_.anyPeriodic())
+            phaseDensity_->setNodalFold(
+                [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
+    }
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
     schemes.checkUnknownKeys();
     if (comm_.parallel()) setUpParallel();
+}
+
+template <int dim> void MpmSimulation<dim>::logDerivedConstants() const {
+    std::ostringstream os;
+    for (const auto& m : materials_)
+        os << "Material " << m->name() << ":\n" << m->describe();
+    const char* per = dim == 2 ? "/m" : "";
+    for (const auto& b : bodies_.bodies()) {
+        os << "Body " << b->name() << ": mass " << b->mass() << " kg" << per << ", centroid ("
+           << b->position().transpose() << ") m, principal inertia ";
+        if constexpr (dim == 2)
+            os << b->inertia()[2];
+        else
+            os << '(' << b->inertia().transpose() << ')';
+        os << " kg m2" << per << '\n';
+    }
+    log() << os.str() << '\n';
 }
 
 template <int dim> void MpmSimulation<dim>::setUpParallel() {
@@ -81,13 +106,16 @@ template <int dim> void MpmSimulation<dim>::setUpParallel() {
                          "rebalancing is not available with a unilateral wall (slip, friction, "
                          "velocity) under a USF stress update: the walls' contact state "
                          "stays with the rank that owned its nodes; remove rebalance or use USL");
-    if (fBar_) // F̄'s nodal average: complete on every node a rank reads, ghosts included
-        fBar_->setNodalFold([this](NodeArray<double>& q) {
-            auto comm = timer_(PhaseTimer::Comm);
-            subdomain_->halo().sum(q);
-            if (bc_.anyPeriodic()) subdomain_->foldPeriodic(bc_.lattice(), q);
-            subdomain_->halo().copy(q, grid_.mass);
-        });
+    // F̄'s and the trans-phase density's nodal sums: complete on every node a rank reads,
+    // ghosts included.
+    const auto fold = [this](NodeArray<double>& q) {
+        auto comm = timer_(PhaseTimer::Comm);
+        subdomain_->halo().sum(q);
+        if (bc_.anyPeriodic()) subdomain_->foldPeriodic(bc_.lattice(), q);
+        subdomain_->halo().copy(q, grid_.mass);
+    };
+    if (fBar_) fBar_->setNodalFold(fold);
+    if (phaseDensity_) phaseDensity_->setNodalFold(fold);
     if (comm_.master())
         rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(
             global_, bodies_.empty() ? std::vector<std::string>{"particles"}
@@ -312,8 +340,9 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
 template <int dim> void MpmSimulation<dim>::computeCouplingForces(double dt) {
     auto timer = timer_(PhaseTimer::Contact);
     bodies_.clearForces();
-    coupling_->computeForces(particles_, bodies_.bodies(), waveOf_, criticalDensityOf_, sort_,
-                             grid_, dt);
+    const std::vector<int>* gasified =
+        phaseDensity_ ? &particles_.flag(transPhaseFields(particles_).gasified) : nullptr;
+    coupling_->computeForces(particles_, bodies_.bodies(), waveOf_, gasified, sort_, grid_, dt);
     if (comm_.parallel()) bodies_.sumForces(comm_); // every rank's points push the bodies
 }
 
@@ -480,6 +509,7 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
               isInverted && volumeFromRate_[particles_.material[inverted]]
                   ? "has a volume that is not finite (velocity gradient not finite)"
                   : "has det F <= 0 (inverted element)");
+    if (phaseDensity_) phaseDensity_->apply(particles_, grid_, *transfer_, sort_);
     for (std::size_t m = 0; m < materials_.size(); ++m) {
         const Index bad = materials_[m]->updateStress(particles_, materialParticles_[m], dt);
         failIfAny(bad >= 0, "constitutive", bad, "has a stress that is not finite");

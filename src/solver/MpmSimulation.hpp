@@ -23,6 +23,7 @@
 #include "solver/State.hpp"
 #include "solver/StressUpdateOrder.hpp"
 #include "transfers/FBar.hpp"
+#include "transfers/PhaseDensity.hpp"
 #include "transfers/Transfer.hpp"
 
 #include <array>
@@ -92,6 +93,8 @@ private:
     // Parallel runs (docs/parallel.md); nothing of it runs in a serial one.
     /// Check the case uses only what a parallel run supports; read the decomposition.
     void setUpParallel();
+    /// Log each material's and body's derived constants (cone slope, K0, ρ_c, mass, inertia).
+    void logDerivedConstants() const;
     /// Rebalance when due, then send the points whose block another rank owns there (after G2P:
     /// at the start of the step).
     void exchangePoints();
@@ -154,6 +157,8 @@ private:
     std::unique_ptr<Transfer<dim>> transfer_;
     std::unique_ptr<StressUpdateOrder> order_;
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
+    /// The trans-phase density ρ̄_p (PhaseDensity.hpp), with any trans-phase material
+    std::unique_ptr<PhaseDensity<dim>> phaseDensity_;
     BlockSort<dim> sort_;
     double dt_ = 0; ///< size of the step under way
     Index removed_ = 0;

@@ -36,7 +36,8 @@ boundary: {yMin: noSlip, xMin: slip, xMax: slip, yMax: open}
 YAML
 cat >"$base/constant/materials" <<'YAML'
 sand: {type: muI, density: 2000, E: 1.0e7, nu: 0.3, frictionAngle: 30, frictionAngle2: 34,
-       I0: 0.278, grainDiameter: 0.00025, grainDensity: 2650, transPhase: false}
+       I0: 0.278, grainDiameter: 0.00025, grainDensity: 2650, transPhase: false,
+       coneFit: compression}   # the fit these measurements were made with
 YAML
 cat >"$base/constant/particles" <<'YAML'
 column:

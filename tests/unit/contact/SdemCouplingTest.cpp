@@ -173,7 +173,7 @@ TEST(SdemCoupling, BodyGetsMinusTheSumOfPointForcesAndTheirTorqueAtTheContactPoi
     std::vector<double>& slip = p.scalar(p.addScalar({"contactSlip"}, 0.0));
     for (int step = 0; step < 3; ++step) {
         bodies[0]->clearForces();
-        coupling.computeForces(p, bodies, {100.0}, {0.0}, sort, grid, 1e-4);
+        coupling.computeForces(p, bodies, {100.0}, nullptr, sort, grid, 1e-4);
         ASSERT_GT(coupling.numContacts(), 20);
         Vec<2> sum = Vec<2>::Zero();
         double torque = 0, scale = 0;

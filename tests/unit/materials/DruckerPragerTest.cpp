@@ -31,7 +31,9 @@ using test::catchInputError;
 using test::invariants;
 using test::randomRotation;
 
-const std::string sand = "type: druckerPrager\ndensity: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: 30\n";
+// The expectations use the compression fit [000 Eq. 8] (frictionCoefficient), stated for 2D too.
+const std::string sand = "type: druckerPrager\ndensity: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: "
+                         "30\nconeFit: compression\n";
 
 template <int dim> std::unique_ptr<Material<dim>> create(const std::string& extra = "") {
     return Material<dim>::create(parse(sand + extra), "sand");
@@ -154,6 +156,59 @@ TEST(DruckerPrager, BadInputIsInputError) {
     }
     // ψ = φ (associated flow) is allowed.
     EXPECT_NO_THROW(create<3>("dilationAngle: 30\n"));
+}
+
+TEST(DruckerPrager, ConeFitFollowsTheDimensionAndWarnsAcrossIt) {
+    // The default fit keeps φ in the run's dimension: plane strain in 2D, compression in 3D.
+    const std::string base = "type: druckerPrager\ndensity: 1600\nE: 1e7\nnu: 0.3\n"
+                             "frictionAngle: 30\n";
+    using DP2 = DruckerPrager<2, HenckyLaw>;
+    using DP3 = DruckerPrager<3, HenckyLaw>;
+    const auto m2 = Material<2>::create(parse(base), "sand");
+    const auto m3 = Material<3>::create(parse(base), "sand");
+    const auto& p2 = dynamic_cast<const DP2&>(*m2).plasticity();
+    const auto& p3 = dynamic_cast<const DP3&>(*m3).plasticity();
+    EXPECT_EQ(p2.coneFit(), ConeFit::planeStrain);
+    EXPECT_EQ(p3.coneFit(), ConeFit::compression);
+    EXPECT_NEAR(planeStrainAngle(p2.staticFriction()), 30.0, 1e-12);
+    EXPECT_NEAR(compressionAngle(p3.staticFriction()), 30.0, 1e-12);
+    // The measurement: the compression fit of 30° is 49.1° in plane strain, and the
+    // plane-strain fit of 30° is 21.4° in triaxial compression.
+    EXPECT_NEAR(planeStrainAngle(frictionCoefficient(30.0)), 49.1, 0.05);
+    EXPECT_NEAR(compressionAngle(planeStrainFrictionCoefficient(30.0)), 21.4, 0.05);
+    EXPECT_EQ(planeStrainAngle(0.9), 90.0); // 12 μ² ≥ 9: beyond any plane-strain angle
+    // The other dimension's fit is warned about, with the angle it amounts to.
+    testing::internal::CaptureStderr();
+    Material<2>::create(parse(base + "coneFit: compression\n"), "sand");
+    const std::string w2 = testing::internal::GetCapturedStderr();
+    EXPECT_NE(w2.find("coneFit: compression in a 2D run"), std::string::npos) << w2;
+    EXPECT_NE(w2.find("acts as φ = 49.1°"), std::string::npos) << w2;
+    EXPECT_NE(w2.find("constant/materials:6"), std::string::npos) << w2; // file:line of the key
+    testing::internal::CaptureStderr();
+    Material<3>::create(parse(base + "coneFit: planeStrain\n"), "sand");
+    EXPECT_NE(testing::internal::GetCapturedStderr().find("acts as φ = 21.4°"), std::string::npos);
+    testing::internal::CaptureStderr();
+    Material<2>::create(parse(base + "coneFit: planeStrain\n"), "sand");
+    Material<3>::create(parse(base), "sand");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
+TEST(DruckerPrager, DescribeStatesTheDerivedConstants) {
+    const auto m = Material<2>::create(
+        parse("type: druckerPrager\ndensity: 1500\nE: 1e6\nnu: 0.3\nfrictionAngle: 30\n"), "s");
+    const std::string d = m->describe();
+    EXPECT_NE(d.find("density 1500 kg/m3"), std::string::npos) << d;
+    EXPECT_NE(d.find("cone fit planeStrain: mu = 0.4804 (φ = 30° in plane strain, 21.4° in "
+                     "triaxial compression)"),
+              std::string::npos)
+        << d;
+    EXPECT_NE(d.find("K0 of a geostatic initial stress (1 - sin phi) = 0.5"), std::string::npos)
+        << d;
+    EXPECT_NE(d.find("trans-phase: critical density 1500 kg/m3"), std::string::npos) << d;
+    const auto off = Material<2>::create(parse("type: druckerPrager\ndensity: 1500\nE: 1e6\n"
+                                               "nu: 0.3\nfrictionAngle: 30\ntransPhase: false\n"),
+                                         "s");
+    EXPECT_NE(off->describe().find("trans-phase: off"), std::string::npos);
 }
 
 TEST(DruckerPrager, UnknownTypeListsGranularTypes) {

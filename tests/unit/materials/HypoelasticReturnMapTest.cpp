@@ -32,8 +32,12 @@ Dictionary parse(const std::string& text) {
 const std::string sandBase = "type: druckerPrager\nelasticity: hypoelastic\ndensity: 1600\n"
                              "E: 1e7\nnu: 0.3\nfrictionAngle: 30\n";
 
+/// The sand of [001] with its plane-strain fit [001 Eq. 35], stated (3D's default is the
+/// compression fit) unless `extra` gives one.
 template <int dim> std::unique_ptr<Material<dim>> create(const std::string& extra = "") {
-    return Material<dim>::create(parse(sandBase + extra), "sand");
+    const bool fit = extra.find("coneFit") != std::string::npos;
+    return Material<dim>::create(parse(sandBase + (fit ? "" : "coneFit: planeStrain\n") + extra),
+                                 "sand");
 }
 
 const double sqrt2 = std::sqrt(2.0);
@@ -102,7 +106,7 @@ TEST(HypoelasticDruckerPrager, CoefficientsAndDefaults) {
 
     const auto m = create<3>();
     const auto& dp = plasticityOf(*m);
-    EXPECT_EQ(dp.coneFit(), ConeFit::planeStrain); // [001]'s fit with its elasticity
+    EXPECT_EQ(dp.coneFit(), ConeFit::planeStrain); // as stated by create()
     EXPECT_EQ(dp.staticFriction(), planeStrainFrictionCoefficient(30.0));
     EXPECT_EQ(dp.dilatancy(), 0.0);
     EXPECT_EQ(dp.cohesion(), 0.0);
@@ -143,8 +147,17 @@ TEST(ElastoPlastic, FactoryPicksTheElasticLaw) {
     EXPECT_TRUE(isA<HenckyDP>(*byDefault));
     EXPECT_TRUE(isA<HenckyDP>(*hencky));
     EXPECT_TRUE(isA<HypoDP>(*hypo));
+    // The cone fit follows the dimension, whatever the elastic law.
     EXPECT_EQ(dynamic_cast<const HenckyDP&>(*byDefault).plasticity().coneFit(),
+              ConeFit::planeStrain);
+    EXPECT_EQ(dynamic_cast<const HypoDP&>(*hypo).plasticity().coneFit(), ConeFit::planeStrain);
+    using HenckyDP3 = DruckerPrager<3, HenckyLaw>;
+    using HypoDP3 = DruckerPrager<3, HypoelasticLaw>;
+    const auto hencky3 = Material<3>::create(parse(dp), "h");
+    const auto hypo3 = Material<3>::create(parse(dp + "elasticity: hypoelastic\n"), "i");
+    EXPECT_EQ(dynamic_cast<const HenckyDP3&>(*hencky3).plasticity().coneFit(),
               ConeFit::compression);
+    EXPECT_EQ(dynamic_cast<const HypoDP3&>(*hypo3).plasticity().coneFit(), ConeFit::compression);
     using HypoMuI = MuI<3, HypoelasticLaw>;
     using HenckyMuI = MuI<3, HenckyLaw>;
     EXPECT_TRUE(isA<HypoMuI>(*Material<3>::create(parse(mui + "elasticity: hypoelastic\n"), "d")));
@@ -501,7 +514,8 @@ TEST(HypoelasticMuI, ReturnKeepsPressureAndMeetsRateDependentFriction) {
     // τ = μ(I) p, I = Δγ/Δt √(d² ρ_s/p); tension goes to the apex.
     const auto m = Material<3>::create(
         parse("type: muI\nelasticity: hypoelastic\ndensity: 1600\nE: 1e7\nnu: 0.3\n"
-              "frictionAngle: 20\nfrictionAngle2: 35\ngrainDiameter: 1e-2\ngrainDensity: 2650\n"),
+              "frictionAngle: 20\nfrictionAngle2: 35\ngrainDiameter: 1e-2\ngrainDensity: 2650\n"
+              "coneFit: planeStrain\n"),
         "m");
     const ElasticConstants c(1e7, 0.3);
     const double muS = planeStrainFrictionCoefficient(20.0);

@@ -31,7 +31,9 @@ using test::catchInputError;
 using test::invariants;
 using test::randomRotation;
 
-const std::string elastic = "density: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: 30\n";
+// The expectations use the compression fit [000 Eq. 8] (frictionCoefficient), stated for 2D too.
+const std::string elastic =
+    "density: 1600\nE: 1e7\nnu: 0.3\nfrictionAngle: 30\nconeFit: compression\n";
 
 template <int dim>
 std::unique_ptr<Material<dim>> createMuI(double d = 1e-3, const std::string& extra = "") {
