@@ -35,7 +35,6 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
         maxWaveSpeed_ = std::max(maxWaveSpeed_, m->waveSpeed());
         viscousFactor_ = std::min(viscousFactor_, m->viscousStepFactor(grid_.h()));
         waveOf_.push_back(m->waveSpeed());
-        criticalDensityOf_.push_back(m->criticalDensity());
         m->declareState(particles_);
     }
     logDerivedConstants();

@@ -173,7 +173,7 @@ private:
     std::array<Vec<dim>, 2 * dim> reactions_;
     BodySet<dim> bodies_;
     std::unique_ptr<Coupling<dim>> coupling_;
-    std::vector<double> waveOf_, criticalDensityOf_; ///< per material
+    std::vector<double> waveOf_; ///< per material
     std::vector<std::unique_ptr<FunctionObject<dim>>> functions_;
     io::TimeDirectoryWriter writer_;
     std::unique_ptr<io::TimeDirectoryWriter> rootWriter_; ///< rank 0 of a parallel run: .pvtu

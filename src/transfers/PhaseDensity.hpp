@@ -53,9 +53,6 @@ template <int dim> class PhaseDensity {
 public:
     explicit PhaseDensity(std::size_t handle) : handle_(handle) {}
 
-    /// The `phaseDensity` field's handle (Particles::scalar).
-    std::size_t handle() const { return handle_; }
-
     /// ρ̄_p into p.scalar(handle) from the points' current volumes and this step's grid mass.
     void apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>& transfer,
                const BlockSort<dim>& sort);
