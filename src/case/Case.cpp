@@ -29,9 +29,16 @@ Case Case::processor(int rank) const {
     return c;
 }
 
+namespace {
+/// A file of system/ or constant/: a processor case shares the root case's.
+bool shared(const std::string& relative) {
+    return relative.rfind("system/", 0) == 0 || relative.rfind("constant/", 0) == 0;
+}
+} // namespace
+
 fs::path Case::locate(const std::string& relative) const {
     for (const fs::path& dir : {root_, global_}) {
-        if (dir.empty()) continue;
+        if (dir.empty() || (dir == global_ && !shared(relative))) continue;
         if (fs::is_regular_file(dir / relative)) return dir / relative;
         if (fs::is_regular_file(dir / (relative + ".yaml"))) return dir / (relative + ".yaml");
     }
@@ -42,10 +49,20 @@ bool Case::exists(const std::string& relative) const {
     return fs::is_regular_file(locate(relative));
 }
 
+std::string Case::displayName(const std::string& relative) const {
+    if (global_.empty()) return relative;
+    // The processor's own file, or one it should have (a time directory's); a shared file that
+    // is missing belongs in the root case.
+    const bool own = !shared(relative) || fs::is_regular_file(root_ / relative) ||
+                     fs::is_regular_file(root_ / (relative + ".yaml"));
+    return own ? (root_.filename() / relative).generic_string() : relative;
+}
+
 Dictionary Case::read(const std::string& relative) const {
     const fs::path p = locate(relative);
-    if (!fs::is_regular_file(p)) throw InputError(relative, 0, "", "required file is missing");
-    Dictionary d = Dictionary::fromFile(p, relative);
+    const std::string name = displayName(relative);
+    if (!fs::is_regular_file(p)) throw InputError(name, 0, "", "required file is missing");
+    Dictionary d = Dictionary::fromFile(p, name);
     // Relative file entries (level sets, meshes) are relative to the (root) case.
     d.setBaseDirectory(globalRoot());
     return d;

@@ -15,8 +15,9 @@ public:
     explicit Case(std::filesystem::path root);
     /// The case of rank `rank` of a parallel run (OpenFOAM's processor case): its time
     /// directories live in `<root>/processor<rank>/`, which must exist (decomposePar made it);
-    /// read() and exists() look there first and then in the root case, so system/ and constant/
-    /// are shared. An InputError when the directory is missing.
+    /// read() and exists() look there first and, for system/ and constant/ (shared), then in the
+    /// root case; a time directory's files are the processor's own. An InputError when the
+    /// directory is missing.
     Case processor(int rank) const;
 
     const std::filesystem::path& root() const { return root_; }
@@ -24,17 +25,22 @@ public:
     const std::filesystem::path& globalRoot() const { return global_.empty() ? root_ : global_; }
     std::filesystem::path path(const std::string& relative) const { return root_ / relative; }
 
-    /// Read `relative` (e.g. "system/controlDict"); messages name it by that relative path.
-    /// A missing required file is an InputError.
+    /// Read `relative` (e.g. "system/controlDict"); messages name it by displayName(). A missing
+    /// required file is an InputError.
     Dictionary read(const std::string& relative) const;
     bool exists(const std::string& relative) const;
+    /// `relative` as messages name it: its path from the whole case's root, i.e. with the
+    /// processor folder of a processor case ("processor1/0.004/uniform/time") unless it is a
+    /// shared file of the root case ("system/controlDict", or one missing from both).
+    std::string displayName(const std::string& relative) const;
 
     /// Time directories holding particles.vtu, sorted by time value.
     std::vector<std::pair<double, std::string>> timeDirectories() const;
 
 private:
     Case() = default;
-    /// The file `relative` names: in root(), else (processor case) in the global root.
+    /// The file `relative` names: in root(), else (processor case, system/ and constant/ only)
+    /// in the global root.
     std::filesystem::path locate(const std::string& relative) const;
 
     std::filesystem::path root_;

@@ -4,6 +4,7 @@
 #include "case/Case.hpp"
 #include "case/Time.hpp"
 #include "io/PvdIndex.hpp"
+#include "parallel/Comm.hpp"
 #include "particles/Particles.hpp"
 
 #include <filesystem>
@@ -43,6 +44,16 @@ private:
 /// or startTime when a directory has that time), or "" for a fresh start. A startTime other
 /// than 0 without its directory is an InputError.
 std::string restartDirectory(const Case& cs, const Time& time);
+
+/// The time directory a run on the ranks of `comm` starts from, the same on every rank
+/// (collective; a serial Comm gives restartDirectory(cs, time)). With startFrom latestTime: the
+/// latest time every processor folder holds complete (a time directory with particles.vtu: the
+/// writer renames it into place once written, a staging `.<time>.writing` folder is none), "" when
+/// no processor holds a time; newer times only some processors hold (a run killed while writing)
+/// are logged and left, to be overwritten as the run proceeds. Otherwise every rank must find
+/// the same directory. An InputError on every rank when no time is common to all processors
+/// (naming each one's times) or when a rank's startTime has no directory (naming its folder).
+std::string restartDirectory(const Case& cs, const Time& time, const Comm& comm);
 
 /// Read the particles of time directory `timeDir` (its particles.vtu) for a restart into `p`,
 /// whose model state is declared; every restart field must be present and every material index

@@ -137,7 +137,8 @@ void MpmSimulation<dim>::failIfAny(bool bad, const std::string& phase, Index par
 
 template <int dim> void MpmSimulation<dim>::start(Time& time) {
     time_ = &time;
-    const std::string from = io::restartDirectory(case_, time);
+    // Parallel: the latest time every processor holds complete, agreed by all ranks.
+    const std::string from = io::restartDirectory(case_, time, comm_);
     const bool fresh = from.empty();
     if (fresh) {
         gravity_ = acceleration_->at(time.startFrom() == "startTime" ? time.startTime() : 0.0);
@@ -150,11 +151,6 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         preload_ = seeder.preload();
         time.setStart(time.startFrom() == "startTime" ? time.startTime() : 0.0, 0, 0.0);
     } else {
-        if (comm_.parallel() && comm_.broadcast(from) != from)
-            throw InputError(case_.root().string(), 0, "",
-                             "restart time " + from +
-                                 " differs from rank 0's: the processor "
-                                 "directories hold different times (remove the incomplete ones)");
         io::readParticles(case_, from, particles_, materials_.size());
         if (subdomain_) {
             subdomain_->readTime(case_, from);

@@ -106,6 +106,17 @@ template <int dim> void decompose(const Case& cs, const Dictionary& gridDict, bo
     const BoundaryConditions<dim> bc(gridDict, grid); // checks the faces; wraps periodic seeds
     const Time time(cs);
     const Dictionary dict = cs.read("system/decomposeParDict");
+    // A subdomain owns whole blocks: more subdomains than blocks leaves some without any (and
+    // writes a folder for each), refused before anything is written.
+    const int size = dict.getInt("numberOfSubdomains", Bounds{1, 1e6});
+    if (size > grid.numBlocks()) {
+        std::ostringstream os;
+        os << size << " subdomains, but the grid (constant/grid) has only " << grid.numBlocks()
+           << " blocks of 4^" << dim << " nodes, the unit of decomposition: a subdomain owns "
+           << "whole blocks; use at most " << grid.numBlocks()
+           << " (far fewer for useful subdomains)";
+        dict.error("numberOfSubdomains", os.str());
+    }
 
     const std::vector<fs::path> old = processorDirectories(cs);
     if (!old.empty() && !force) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Processor cases of a parallel run: time directories of their own, system/ and constant/ read
-// from the root case unless the processor directory has the file.
+// from the root case unless the processor directory has the file; messages name the processor
+// folder.
 #include "case/Case.hpp"
 #include "TestSupport.hpp"
 
@@ -39,6 +40,25 @@ TEST_F(CaseTest, ProcessorCaseReadsTheRootsFilesAndKeepsItsOwnTimes) {
     ASSERT_EQ(p.timeDirectories().size(), 1u);
     EXPECT_EQ(p.timeDirectories()[0].second, "0.25");
     EXPECT_EQ(root.timeDirectories()[0].second, "0.5");
+}
+
+TEST_F(CaseTest, ProcessorFilesAreNamedWithTheirFolderAndNeverTakenFromTheRoot) {
+    write(dir_ / "system" / "controlDict", "endTime: 1\n");
+    write(dir_ / "0.004" / "uniform" / "time", "value: 0.004\n"); // the root's (parallel run)
+    write(dir_ / "processor1" / "0.004" / "particles.vtu", "");
+    write(dir_ / "processor1" / "0.004" / "uniform" / "rigidBodies", "bodies: [1, 2\n");
+    const Case p = Case(dir_).processor(1);
+    EXPECT_EQ(p.displayName("system/controlDict"), "system/controlDict");
+    EXPECT_EQ(p.displayName("system/mpmSchemes"), "system/mpmSchemes"); // missing: the root's
+    EXPECT_EQ(p.displayName("0.004/uniform/time"), "processor1/0.004/uniform/time");
+    EXPECT_EQ(Case(dir_).displayName("0.004/uniform/time"), "0.004/uniform/time");
+    // A time directory's file is the processor's own: the root's copy does not stand in.
+    EXPECT_FALSE(p.exists("0.004/uniform/time"));
+    const InputError missing = test::catchInputError([&] { (void)p.read("0.004/uniform/time"); });
+    EXPECT_EQ(missing.file(), "processor1/0.004/uniform/time");
+    const InputError corrupt =
+        test::catchInputError([&] { (void)p.read("0.004/uniform/rigidBodies"); });
+    EXPECT_EQ(corrupt.file(), "processor1/0.004/uniform/rigidBodies");
 }
 
 TEST_F(CaseTest, AMissingProcessorDirectoryIsAnInputError) {
