@@ -61,9 +61,9 @@ public:
     /// point went meanwhile (a tangential spring history): the coupling then zeroes every
     /// point's slip outside contact each step, not only those the broad phase visits.
     virtual bool resetsAllSlip() const { return false; }
-    /// `gasifiedPoints: local` (default): a gasified point (ρ < ρ_c of its material) takes its
-    /// contact force on its own velocity after G2P [000 Eq. 20]; `grid`: through the grid like a
-    /// dense point [000 Eq. 19].
+    /// `gasifiedPoints: grid` (default): a gasified point (ρ̄ < ρ_c of its material) takes its
+    /// contact force through the grid like a dense point [000 Eq. 19]; `local`: on its own
+    /// velocity after G2P [000 Eq. 20].
     bool gasifiedOnGrid() const { return gasifiedOnGrid_; }
 
     static std::unique_ptr<CouplingLaw> create(const Dictionary& dict, double h);
@@ -77,7 +77,7 @@ protected:
     double mu_ = 0;               ///< Coulomb friction coefficient [-]
     double slipFraction_ = 0.01;  ///< s_p / r_p of [004 Eq. 36]
     double minGapFraction_ = 0.0; ///< ξ_min / r_p
-    bool gasifiedOnGrid_ = false; ///< gasified points' force through the grid
+    bool gasifiedOnGrid_ = true; ///< gasified points' force through the grid
 };
 
 template <int dim> using CouplingLawRegistry = Registry<CouplingLaw<dim>, double>;

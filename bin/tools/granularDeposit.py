@@ -1,0 +1,68 @@
+"""Measures of a granular collapse's deposit (numpy and vtk only), shared by
+tutorials/granularFlows/columnCollapse2D and columnCollapse3D:
+
+    import granularDeposit as gd
+    for t, d in gd.frames(case): ...          # d = gd.read(path): points and fields
+    r = gd.front(radius, h)                   # end of the continuous deposit
+    loose, ratio, n = gd.deposit(d, h, dim)   # does the resting deposit carry its weight?
+
+The vertical axis is the last one (y in 2D, z in 3D); the horizontal distance from the column's
+axis is x in 2D and √(x² + y²) in 3D.
+"""
+import os
+
+import numpy as np
+
+import verification
+
+G = 9.81
+
+
+def read(path):
+    """Points "x" (n, 3) and the point fields "stress" (n, 9), "mass", "volume" of a frame."""
+    x, f = verification.read_vtu(path)
+    return {"x": x, "stress": f["stress"], "mass": f["mass"], "volume": f["volume"]}
+
+
+def frames(case):
+    """Sorted [(time, path of particles.vtu)] of a case's written times."""
+    return [(t, os.path.join(case, d, "particles.vtu")) for t, d in verification.time_dirs(case)]
+
+
+def radius(x, dim):
+    """Horizontal distance from the column's axis (x = 0 in 2D, the z axis in 3D)."""
+    return x[:, 0] if dim == 2 else np.hypot(x[:, 0], x[:, 1])
+
+
+def front(r, h):
+    """The end of the continuous deposit: the last point before a gap of more than 1.5 cells in
+    the sorted horizontal distances (grains thrown ahead of it do not count)."""
+    rs = np.sort(r)
+    gaps = np.where(np.diff(rs) > 1.5 * h)[0]
+    return rs[gaps[0]] if len(gaps) else rs[-1]
+
+
+def height(d, h, dim):
+    """The deposit's highest point; the material's surface lies a quarter cell above the top
+    point (2 points per cell and direction)."""
+    return d["x"][:, dim - 1].max() + h / 4
+
+
+def deposit(d, h, dim):
+    """(share of the points more than two cells below the free surface that carry no stress,
+    Σσ_v / Σ ρ g depth over those points, their number). The free surface is the highest point
+    of each column of cells (+ h/4); ρ the deposit's bulk density Σm/ΣV."""
+    x = d["x"]
+    cells = np.floor(x[:, : dim - 1] / h).astype(int)
+    _, col = np.unique(cells, axis=0, return_inverse=True)
+    col = col.ravel()
+    z = x[:, dim - 1]
+    top = np.full(col.max() + 1, -np.inf)
+    np.maximum.at(top, col, z)
+    depth = top[col] - z + h / 4
+    deep = depth > 2 * h
+    loose = np.abs(d["stress"]).max(axis=1) == 0
+    rho = d["mass"].sum() / d["volume"].sum()
+    sv = -d["stress"][:, 4 if dim == 2 else 8]
+    ratio = sv[deep].sum() / (rho * G * depth[deep]).sum()
+    return loose[deep].mean(), ratio, int(deep.sum())
