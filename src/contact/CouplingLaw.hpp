@@ -77,7 +77,7 @@ protected:
     double mu_ = 0;               ///< Coulomb friction coefficient [-]
     double slipFraction_ = 0.01;  ///< s_p / r_p of [004 Eq. 36]
     double minGapFraction_ = 0.0; ///< ξ_min / r_p
-    bool gasifiedOnGrid_ = true; ///< gasified points' force through the grid
+    bool gasifiedOnGrid_ = true;  ///< gasified points' force through the grid
 };
 
 template <int dim> using CouplingLawRegistry = Registry<CouplingLaw<dim>, double>;

@@ -10,9 +10,8 @@
 
 namespace mpm {
 
-ConeFit readConeFit(const Dictionary& dict, int dim) {
-    const std::string def = dim == 2 ? "planeStrain" : "compression";
-    return dict.getWordOr("coneFit", def, {"planeStrain", "compression"}) == "compression"
+ConeFit readConeFit(const Dictionary& dict) {
+    return dict.getWordOr("coneFit", "planeStrain", {"planeStrain", "compression"}) == "compression"
                ? ConeFit::compression
                : ConeFit::planeStrain;
 }
@@ -30,17 +29,13 @@ std::string describeCone(const std::string& symbol, double mu) {
 }
 
 void warnConeFit(const Dictionary& dict, ConeFit fit, int dim, double angleDegrees) {
-    const bool mismatch = (dim == 2) == (fit == ConeFit::compression);
-    if (!mismatch) return;
+    if (dim != 2 || fit != ConeFit::compression) return;
     const double mu = coneFriction(fit, angleDegrees);
-    const double acts = dim == 2 ? planeStrainAngle(mu) : compressionAngle(mu);
-    warning() << dict.fileName() << ':' << dict.line("coneFit") << ": coneFit: " << coneFitName(fit)
-              << " in a " << dim << "D run: φ = " << angleDegrees
+    warning() << dict.fileName() << ':' << dict.line("coneFit")
+              << ": coneFit: compression in a 2D run: φ = " << angleDegrees
               << "° gives μ = " << std::setprecision(4) << mu
-              << ", which acts as φ = " << std::setprecision(3) << acts << "° "
-              << (dim == 2 ? "in plane strain" : "in triaxial compression") << "; the " << dim
-              << "D default '" << (dim == 2 ? "planeStrain" : "compression")
-              << "' keeps φ (docs/settingsGuide.md)\n";
+              << ", which acts as φ = " << std::setprecision(3) << planeStrainAngle(mu)
+              << "° in plane strain; the default 'planeStrain' keeps φ (docs/settingsGuide.md)\n";
 }
 
 double coneFriction(ConeFit fit, double angleDegrees) {
@@ -50,8 +45,7 @@ double coneFriction(ConeFit fit, double angleDegrees) {
 
 DruckerPragerPlasticity::DruckerPragerPlasticity(const Dictionary& dict, const ElasticConstants& c,
                                                  ElasticLaw law, int dim)
-    : phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
-      fit_(readConeFit(dict, dim)),
+    : phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})), fit_(readConeFit(dict)),
       psi_(dict.getScalarOr("dilationAngle", 0.0, Bounds::closed(0.0, phi_))),
       cohesion_(dict.getScalarOr("cohesion", 0.0, Bounds::nonNegative())),
       flow_{coneFriction(fit_, phi_), coneFriction(fit_, psi_), c.G, c.K} {

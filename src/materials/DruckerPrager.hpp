@@ -13,13 +13,16 @@ enum class ConeFit {
     planeStrain  ///< Mohr–Coulomb in plane strain [001 Eq. 35]
 };
 
-/// Read `coneFit` (compression | planeStrain); the default follows the run's dimension:
-/// planeStrain in 2D (plane strain [001 Eq. 35]), compression in 3D ([000 Eq. 8]).
-ConeFit readConeFit(const Dictionary& dict, int dim);
+/// Read `coneFit` (compression | planeStrain). The default is planeStrain in 2D and 3D: a
+/// granular material fails and flows in shear, and in simple shear (plane strain at zero
+/// dilatancy) this fit keeps φ; it is also μ(I)'s μ = |τ|/p. The compression fit [000 Eq. 8]
+/// keeps φ in triaxial compression, where the plane-strain fit acts weaker (30° → 21.4°);
+/// docs/settingsGuide.md has the measurements.
+ConeFit readConeFit(const Dictionary& dict);
 /// μ (or q_φ) of an angle [deg] by `fit`.
 double coneFriction(ConeFit fit, double angleDegrees);
-/// Warn when `coneFit` was set to the fit of the other dimension: a friction angle φ [deg] then
-/// acts as a different angle in this run (2D with compression: φ = 30° acts as 49°).
+/// Warn when `coneFit: compression` is chosen in a 2D run, which is plane strain: a friction
+/// angle φ [deg] then acts as a steeper one (φ = 30° acts as 49.1°).
 void warnConeFit(const Dictionary& dict, ConeFit fit, int dim, double angleDegrees);
 /// "μ = 0.4629 (φ = 30° in plane strain, 23.7° in triaxial compression)": a cone coefficient
 /// and the Mohr–Coulomb angles it amounts to.

@@ -9,7 +9,7 @@ namespace mpm {
 MuIPlasticity::MuIPlasticity(const Dictionary& dict, const ElasticConstants& c, ElasticLaw /*law*/,
                              int dim)
     : G_(c.G), phi_(dict.getScalar("frictionAngle", {0.0, 90.0, false, false})),
-      fit_(readConeFit(dict, dim)), muS_(coneFriction(fit_, phi_)),
+      fit_(readConeFit(dict)), muS_(coneFriction(fit_, phi_)),
       mu2_(coneFriction(fit_, dict.getScalar("frictionAngle2", {phi_, 90.0, false, false}))),
       I0_(dict.getScalarOr("I0", 0.278, Bounds::positive())),
       grainDiameter_(dict.getScalar("grainDiameter", Bounds::positive())),

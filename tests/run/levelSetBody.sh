@@ -35,7 +35,7 @@ bounds: {min: [0, 0, 0], max: [0.12, 0.12, 0.12]}
 cellSize: 0.008
 boundary: {zMax: open}
 YAML
-echo 'sand: {type: druckerPrager, density: 1500, E: 1.0e6, nu: 0.3, frictionAngle: 30}' >"$c/constant/materials"
+echo 'sand: {type: druckerPrager, density: 1500, E: 1.0e6, nu: 0.3, frictionAngle: 30, coneFit: compression}' >"$c/constant/materials"
 cat >"$c/constant/particles" <<'YAML'
 bed:
   material: sand

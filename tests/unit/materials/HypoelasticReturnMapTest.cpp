@@ -147,7 +147,7 @@ TEST(ElastoPlastic, FactoryPicksTheElasticLaw) {
     EXPECT_TRUE(isA<HenckyDP>(*byDefault));
     EXPECT_TRUE(isA<HenckyDP>(*hencky));
     EXPECT_TRUE(isA<HypoDP>(*hypo));
-    // The cone fit follows the dimension, whatever the elastic law.
+    // The cone fit is plane strain by default, whatever the elastic law and dimension.
     EXPECT_EQ(dynamic_cast<const HenckyDP&>(*byDefault).plasticity().coneFit(),
               ConeFit::planeStrain);
     EXPECT_EQ(dynamic_cast<const HypoDP&>(*hypo).plasticity().coneFit(), ConeFit::planeStrain);
@@ -156,8 +156,8 @@ TEST(ElastoPlastic, FactoryPicksTheElasticLaw) {
     const auto hencky3 = Material<3>::create(parse(dp), "h");
     const auto hypo3 = Material<3>::create(parse(dp + "elasticity: hypoelastic\n"), "i");
     EXPECT_EQ(dynamic_cast<const HenckyDP3&>(*hencky3).plasticity().coneFit(),
-              ConeFit::compression);
-    EXPECT_EQ(dynamic_cast<const HypoDP3&>(*hypo3).plasticity().coneFit(), ConeFit::compression);
+              ConeFit::planeStrain);
+    EXPECT_EQ(dynamic_cast<const HypoDP3&>(*hypo3).plasticity().coneFit(), ConeFit::planeStrain);
     using HypoMuI = MuI<3, HypoelasticLaw>;
     using HenckyMuI = MuI<3, HenckyLaw>;
     EXPECT_TRUE(isA<HypoMuI>(*Material<3>::create(parse(mui + "elasticity: hypoelastic\n"), "d")));
