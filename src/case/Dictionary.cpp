@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <locale>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <utility>
@@ -116,6 +117,134 @@ void validate(const YAML::Node& node, const std::string& file, const std::string
     }
 }
 
+/// The first entry of a file written in OpenFOAM's dictionary syntax, for the message that says
+/// the case files are YAML.
+struct FoamEntry {
+    int line = 0;       ///< 1-based line of the entry (of the header when there is no entry)
+    std::string key;    ///< its keyword ("" when the file has only a FoamFile header)
+    std::string value;  ///< its value as written, without the ';' ("" for a sub-dictionary)
+    bool block = false; ///< `key { … }`: a sub-dictionary
+};
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string::npos) return "";
+    return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+bool isKeyword(const std::string& s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    return std::all_of(s.begin(), s.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+    });
+}
+
+/// Detect OpenFOAM's dictionary form (OpenFOAM's own files: a `FoamFile { … }` header,
+/// `keyword value;` entries, `keyword { … }` sub-dictionaries, C and C++ comments): the header, or
+/// at least one `keyword value;` line at the top level. Returns the first entry after the header.
+std::optional<FoamEntry> openFoamSyntax(const std::string& text) {
+    std::istringstream in(text);
+    std::string raw;
+    int lineNo = 0, depth = 0, headerLine = 0, headerDepth = -1;
+    bool inComment = false, header = false, semicolonEntry = false;
+    std::optional<FoamEntry> first;
+    std::string pendingWord; // a keyword alone on its line: a sub-dictionary if '{' follows
+    int pendingLine = 0;
+    while (std::getline(in, raw)) {
+        ++lineNo;
+        // Remove /* … */ (across lines) and // comments.
+        std::string line;
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            if (inComment) {
+                if (raw.compare(i, 2, "*/") == 0) {
+                    inComment = false;
+                    ++i;
+                }
+            } else if (raw.compare(i, 2, "/*") == 0) {
+                inComment = true;
+                ++i;
+            } else if (raw.compare(i, 2, "//") == 0) {
+                break;
+            } else {
+                line += raw[i];
+            }
+        }
+        line = trim(line);
+        if (line.empty() || line[0] == '#') continue; // #include, #inputMode, YAML comments
+        const bool atTop = depth == 0 && headerDepth < 0;
+        // The keyword that starts the line, and what follows it.
+        std::size_t w = 0;
+        while (w < line.size() && !std::isspace(static_cast<unsigned char>(line[w])) &&
+               line[w] != '{' && line[w] != ';')
+            ++w;
+        const std::string word = line.substr(0, w);
+        const std::string rest = trim(line.substr(w));
+        if (!pendingWord.empty() && line[0] == '{' && !first) {
+            first = FoamEntry{pendingLine, pendingWord, "", true};
+        }
+        pendingWord.clear();
+        if (atTop && word == "FoamFile" && (rest.empty() || rest[0] == '{')) {
+            header = true;
+            headerLine = lineNo;
+            headerDepth = depth;
+        } else if (atTop && isKeyword(word) && !first) {
+            if (!rest.empty() && rest.back() == ';' && rest.find(':') == std::string::npos &&
+                rest.size() > 1) {
+                first = FoamEntry{lineNo, word, trim(rest.substr(0, rest.size() - 1)), false};
+            } else if (!rest.empty() && rest[0] == '{') {
+                first = FoamEntry{lineNo, word, "", true};
+            } else if (rest.empty()) {
+                pendingWord = word;
+                pendingLine = lineNo;
+            }
+        }
+        if (isKeyword(word) && rest.size() > 1 && rest.back() == ';' &&
+            rest.find(':') == std::string::npos)
+            semicolonEntry = true;
+        for (const char c : line) {
+            if (c == '{') ++depth;
+            if (c == '}') {
+                depth = std::max(depth - 1, 0);
+                if (depth == headerDepth) headerDepth = -1; // the header's block closed
+            }
+        }
+    }
+    if (!header && !semicolonEntry) return std::nullopt;
+    if (first) return first;
+    return FoamEntry{headerLine, "", "", false};
+}
+
+/// An OpenFOAM value in YAML: `(0 0 -9.81)` → `[0, 0, -9.81]`; anything else as written.
+std::string yamlValue(const std::string& value) {
+    if (value.size() >= 2 && value.front() == '(' && value.back() == ')' &&
+        value.find_first_of("()", 1) == value.size() - 1) {
+        std::istringstream items(value.substr(1, value.size() - 2));
+        std::string item, out;
+        while (items >> item)
+            out += (out.empty() ? "" : ", ") + item;
+        return "[" + out + "]";
+    }
+    return value;
+}
+
+/// The error for a file in OpenFOAM syntax: it names the first entry and its YAML form.
+[[noreturn]] void openFoamSyntaxError(const FoamEntry& e, const std::string& file) {
+    const std::string yaml =
+        "the case files are YAML, not OpenFOAM dictionaries (docs/caseFormat.md): ";
+    const std::string rest = "; leave out the FoamFile header and the ';' after each value";
+    if (e.key.empty()) {
+        throw InputError(file, e.line, "",
+                         yaml + "write each entry as 'key: value' (e.g. 'endTime: 0.5')" + rest);
+    }
+    if (e.block) {
+        throw InputError(file, e.line, e.key,
+                         yaml + "write the sub-dictionary '" + e.key + " { … }' as '" + e.key +
+                             ":' with its entries indented below it, each as 'key: value'" + rest);
+    }
+    throw InputError(file, e.line, e.key,
+                     yaml + "write '" + e.key + " " + e.value + ";' as '" + e.key + ": " +
+                         yamlValue(e.value) + "'" + rest);
+}
 } // namespace
 
 // YAML::Node is a cheap shared handle without a move constructor.
@@ -142,8 +271,10 @@ Dictionary Dictionary::fromString(const std::string& text, const std::string& di
     try {
         docs = YAML::LoadAll(text);
     } catch (const YAML::ParserException& e) {
+        if (const auto foam = openFoamSyntax(text)) openFoamSyntaxError(*foam, displayName);
         throw InputError(displayName, lineOf(e.mark), "", "YAML syntax error: " + e.msg);
     } catch (const YAML::Exception& e) {
+        if (const auto foam = openFoamSyntax(text)) openFoamSyntaxError(*foam, displayName);
         throw InputError(displayName, lineOf(e.mark), "", "YAML error: " + e.msg);
     }
     if (docs.size() > 1) {
@@ -153,6 +284,7 @@ Dictionary Dictionary::fromString(const std::string& text, const std::string& di
     YAML::Node root = docs.empty() ? YAML::Node(YAML::NodeType::Map) : docs.front();
     if (root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
     if (!root.IsMap()) {
+        if (const auto foam = openFoamSyntax(text)) openFoamSyntaxError(*foam, displayName);
         throw InputError(displayName, lineOf(root.Mark()), "",
                          "expected a map of 'key: value' entries at the top level, got " +
                              describe(root));

@@ -403,6 +403,50 @@ TEST(Dictionary, TopLevelMustBeAMap) {
     expectError([] { parse("just text\n"); }, 1, "", "expected a map");
 }
 
+/// An OpenFOAM controlDict as a user would paste it: banner, FoamFile header, entries.
+const char* const openFoamControlDict =
+    "/*--------------------------------*- C++ -*----------------------------------*\\\n"
+    "  =========                 |\n"
+    "  \\\\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox\n"
+    "\\*---------------------------------------------------------------------------*/\n"
+    "FoamFile\n"
+    "{\n"
+    "    version     2.0;\n"
+    "    format      ascii;\n"
+    "    class       dictionary;\n"
+    "    object      controlDict;\n"
+    "}\n"
+    "// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //\n"
+    "\n"
+    "application     icoFoam;\n"
+    "\n"
+    "endTime         0.5;\n";
+
+TEST(Dictionary, OpenFoamSyntaxIsRecognised) {
+    // The header is skipped: the message names the first entry, its line and its YAML form.
+    expectError([] { parse(openFoamControlDict); }, 14, "application",
+                "write 'application icoFoam;' as 'application: icoFoam'");
+    expectError([] { parse(openFoamControlDict); }, 14, "application", "docs/caseFormat.md");
+    expectError([] { parse(openFoamControlDict); }, 14, "application", "are YAML");
+    // Without a header, `word value;` lines are enough; vectors become YAML sequences.
+    expectError([] { parse("endTime 0.5;\ndeltaT 1e-4;\n"); }, 1, "endTime",
+                "write 'endTime 0.5;' as 'endTime: 0.5'");
+    expectError([] { parse("// gravity\nvalue (0 -9.81 0);\n"); }, 2, "value",
+                "as 'value: [0, -9.81, 0]'");
+    // A sub-dictionary first, its brace on the next line (OpenFOAM's layout).
+    expectError([] { parse("FoamFile { version 2.0; }\nboundary\n{\n  yMin noSlip;\n}\n"); }, 2,
+                "boundary", "write the sub-dictionary 'boundary { … }' as 'boundary:'");
+    // A YAML syntax error that is not OpenFOAM's form keeps the YAML message.
+    expectError([] { parse("a: 1\nb: {x: 1\n"); }, 3, "", "YAML syntax error");
+    expectError([] { parse("just text\n"); }, 1, "", "expected a map");
+}
+
+TEST_F(DictionaryFile, OpenFoamFileNamesFileAndLine) {
+    const std::filesystem::path p = file(openFoamControlDict);
+    expectError([&] { Dictionary::fromFile(p, "system/controlDict"); }, 14, "application",
+                "'application: icoFoam'", "system/controlDict");
+}
+
 TEST(Dictionary, SingleDocumentOnly) {
     expectError([] { parse("a: 1\n---\nb: 2\n"); }, 3, "", "single YAML document");
 }
