@@ -66,3 +66,50 @@ def deposit(d, h, dim):
     sv = -d["stress"][:, 4 if dim == 2 else 8]
     ratio = sv[deep].sum() / (rho * G * depth[deep]).sum()
     return loose[deep].mean(), ratio, int(deep.sum())
+
+
+def virial(d, dim):
+    """Σ σ_v V_p / Σ m_p g z_p over all points: 1 for any body at rest on a level floor whose
+    other faces are traction-free or frictionless symmetry planes (∫ σ_zz dV = −∫ ρ g z dV, the
+    virial of the momentum balance; the floor's traction acts at z = 0 and the symmetry planes
+    carry no shear)."""
+    z = d["x"][:, dim - 1]
+    sv = d["stress"][:, 4 if dim == 2 else 8]
+    return -(sv * d["volume"]).sum() / (d["mass"] * G * z).sum()
+
+
+def restSpeed(path):
+    """The speed [m/s] that 99 % of the points are below in a frame (a few rattling points of
+    a deposit at rest do not count)."""
+    _, f = verification.read_vtu(path)
+    return float(np.percentile(np.linalg.norm(f["velocity"], axis=1), 99))
+
+
+def snapshot(frames, out, dim, title, cut=None):
+    """A picture of the material: the points of each (label, path) in `frames` coloured by the
+    pressure p = −tr σ/3 [kPa] (grey: stress-free), one panel each; in 3D the points within
+    `cut` of the plane y = x (a section through the axis), plotted against the distance from
+    the axis."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(len(frames), 1, figsize=(10, 1.0 + 2.2 * len(frames)), squeeze=False)
+    for ax, (label, path) in zip(axes[:, 0], frames):
+        d = read(path)
+        x = d["x"]
+        p = -(d["stress"][:, 0] + d["stress"][:, 4] + d["stress"][:, 8]) / 3e3
+        if dim == 3:
+            keep = np.abs(x[:, 0] - x[:, 1]) < cut
+            x, p = np.c_[radius(x[keep], 3), x[keep, 2]], p[keep]
+        free = p == 0
+        size = float(np.clip(2e4 / len(p), 0.5, 6))
+        ax.scatter(x[free, 0], x[free, 1], s=size, c="0.75", lw=0)
+        sc = ax.scatter(x[~free, 0], x[~free, 1], s=size, c=p[~free], cmap="viridis", lw=0,
+                        vmax=np.percentile(p[~free], 99) if (~free).any() else None)
+        ax.set_aspect("equal")
+        ax.set_title(label, fontsize=9)
+        fig.colorbar(sc, ax=ax, label="p [kPa]", fraction=0.02)
+    axes[-1, 0].set_xlabel("x [m]" if dim == 2 else "distance from the axis [m]")
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
