@@ -34,6 +34,11 @@ int main(int argc, char* argv[]) {
         const RunOptions options{app.has("-dry-run"), app.has("-noFunctionObjects")};
         auto sim = Simulation::create(cs, options, comm);
         sim->start(time);
+        if (time.restarted() && time.endReached()) { // a finished case, run again
+            log() << "endTime " << time.endTime() << " reached at time " << time.name()
+                  << ": nothing to do (raise endTime in system/controlDict to continue)\n\nEnd\n";
+            return;
+        }
         Time::installSignalHandlers();
         const long points = sim->numParticles();
         if (comm.parallel()) log() << "Parallel run on " << comm.size() << " ranks\n";

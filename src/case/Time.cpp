@@ -97,6 +97,7 @@ void Time::readTimeDict(const std::string& dirName) {
     d.checkUnknownKeys();
     setStart(value, index, dt);
     lastName_ = dirName;
+    restarted_ = true;
 }
 
 void Time::writeTimeDict(const fs::path& dir) const {
@@ -171,10 +172,14 @@ void Time::applyStopAt() {
 bool Time::run() {
     pollRequests();
     if (stopNow_) return false;
-    const double tol = adjust_ ? 1e-9 * deltaT_ : 0.5 * fixedDeltaT_;
-    if (value_ < endTime_ - tol) return true;
+    if (!endReached()) return true;
     stopWrite_ = true; // endTime reached (or lowered below the current time): write the end
     return false;
+}
+
+bool Time::endReached() const {
+    const double tol = adjust_ ? 1e-9 * deltaT_ : 0.5 * fixedDeltaT_;
+    return !(value_ < endTime_ - tol);
 }
 
 void Time::advance(double stableDeltaT) {

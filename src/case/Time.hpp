@@ -26,6 +26,11 @@ public:
 
     /// True while the run goes on; checks endTime and stop requests (call once per step).
     bool run();
+    /// True when the current time has reached endTime (within run()'s tolerance: 1e-9 Δt with
+    /// adjustTimeStep, half a fixed step otherwise), so run() takes no step.
+    bool endReached() const;
+    /// True when the start state was read from a time directory (readTimeDict), not seeded.
+    bool restarted() const { return restarted_; }
     /// Choose Δt from the stable step `stableDeltaT` (used when adjustTimeStep is on) and the
     /// write schedule, then advance the time by it.
     void advance(double stableDeltaT);
@@ -105,6 +110,7 @@ private:
     bool stopAtNextWrite_ = false;
     bool writeNowPending_ = false;
     long lastWrittenStep_ = -1;
+    bool restarted_ = false;
     double lastWrittenValue_ = -1e300;
     std::string lastName_;
     std::deque<std::string> written_;

@@ -192,6 +192,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         f->prepare(state(), time); // every check before anything is written
     snapshot();
     if (options_.dryRun) return;
+    if (!fresh && time.endReached()) return; // a finished case: nothing to open or write
     for (auto& f : functions_)
         f->open(global_, time, comm_.master());
     if (fresh) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Run control (issue: foundation §6–7): -dry-run writes nothing; SIGUSR1 writes and continues;
 # SIGUSR2 and SIGTERM write and stop with exit 0 and "End"; a `stop` file does the same;
-# runTimeModifiable re-reads controlDict (stopAt writeNow); purgeWrite keeps the last N;
+# runTimeModifiable re-reads controlDict (stopAt writeNow); a finished case run again says
+# endTime is reached and writes nothing; purgeWrite keeps the last N;
 # an unstable fixed deltaT (allowed on purpose) stops with exit 1 naming step, phase and
 # particle, after writing the last good state, and never writes NaN.
 set -euo pipefail
@@ -68,6 +69,28 @@ rc=0
 wait "$pid" || rc=$?
 [ "$rc" -eq 0 ] && grep -q "Re-read system/controlDict" "$c.log" && [ "$(ntimes "$c")" -ge 2 ] &&
     ok "runTimeModifiable: stopAt writeNow honoured" || bad "runTimeModifiable (exit $rc)"
+
+# A finished case run again: it says endTime is reached, exits 0 and writes nothing.
+c=$work/finished
+rm -rf "$c" && cp -r "$root/tests/cases/restart2D" "$c"
+sed -i 's/^endTime:.*/endTime: 0.01/; s/^writeInterval:.*/writeInterval: 0.01/' "$c/system/controlDict"
+"$solver" -case "$c" >"$c.log1" 2>&1 || bad "finished case: the first run failed"
+state() { (cd "$c" && find . -printf '%p %s %T@\n' | LC_ALL=C sort); }
+before=$(state)
+rc=0
+"$solver" -case "$c" >"$c.log" 2>&1 || rc=$?
+expected="endTime 0.01 reached at time 0.01: nothing to do (raise endTime in system/controlDict to continue)"
+if [ "$rc" -eq 0 ] && grep -qF "$expected" "$c.log" && grep -q "^End" "$c.log" &&
+    ! grep -q "Starting time loop" "$c.log" && [ "$before" = "$(state)" ]; then
+    ok "finished case run again: '$expected', exit 0, nothing written"
+else
+    bad "finished case run again (exit $rc)"; tail -5 "$c.log"; diff <(echo "$before") <(state) | head -5
+fi
+sed -i 's/^endTime:.*/endTime: 0.02/' "$c/system/controlDict"
+rc=0
+"$solver" -case "$c" >"$c.log2" 2>&1 || rc=$?
+[ "$rc" -eq 0 ] && grep -q "Restart from time 0.01" "$c.log2" && [ -d "$c/0.02" ] &&
+    ok "endTime raised: the run continues to 0.02" || bad "endTime raised (exit $rc)"
 
 # purgeWrite keeps the newest N time directories and the .pvd follows.
 c=$work/purge

@@ -317,6 +317,31 @@ TEST_F(TimeTest, TimeDictRoundTrip) {
     EXPECT_EQ(back.name(), name);
 }
 
+TEST_F(TimeTest, AFinishedCaseRestartsWithEndReached) {
+    const std::string dict = "endTime: 0.1\ndeltaT: 0.03\nwriteInterval: 100\n";
+    Time& t = makeTime(dict);
+    EXPECT_FALSE(t.restarted());
+    EXPECT_FALSE(t.endReached());
+    runToEnd(t);
+    EXPECT_TRUE(t.endReached()); // 0.09: within half a step of endTime
+    const std::string name = t.name();
+    t.writeTimeDict(dir_ / name);
+
+    // Run again: the latest time has reached endTime, so there is nothing to do.
+    Time& again = makeTime(dict);
+    again.readTimeDict(name);
+    EXPECT_TRUE(again.restarted());
+    EXPECT_TRUE(again.endReached());
+    EXPECT_FALSE(again.run());
+
+    // endTime raised: the run goes on from there.
+    Time& more = makeTime("endTime: 0.2\ndeltaT: 0.03\nwriteInterval: 100\n");
+    more.readTimeDict(name);
+    EXPECT_TRUE(more.restarted());
+    EXPECT_FALSE(more.endReached());
+    EXPECT_TRUE(more.run());
+}
+
 TEST_F(TimeTest, AStopSeenByAnyRankStopsEveryRank) {
     Time& t = makeTime("endTime: 1\ndeltaT: 0.1\nwriteInterval: 10\n");
     ASSERT_TRUE(t.run());
