@@ -2,6 +2,7 @@
 #include "case/Case.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <sstream>
 
@@ -69,15 +70,43 @@ Dictionary Case::read(const std::string& relative) const {
 }
 
 std::vector<std::pair<double, std::string>> Case::timeDirectories() const {
+    return mpm::timeDirectories(root_, true);
+}
+
+bool isTimeName(const std::string& s) {
+    std::size_t i = 0;
+    const auto digits = [&] {
+        const std::size_t start = i;
+        while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])))
+            ++i;
+        return i - start;
+    };
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    std::size_t mantissa = digits();
+    if (i < s.size() && s[i] == '.') {
+        ++i;
+        mantissa += digits();
+    }
+    if (mantissa == 0) return false;
+    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+        ++i;
+        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+        if (digits() == 0) return false;
+    }
+    return i == s.size();
+}
+
+std::vector<std::pair<double, std::string>> timeDirectories(const fs::path& dir,
+                                                            bool withParticles) {
     std::vector<std::pair<double, std::string>> dirs;
-    for (const auto& e : fs::directory_iterator(root_)) {
-        if (!e.is_directory()) continue;
+    std::error_code ec;
+    fs::directory_iterator it(dir, ec);
+    if (ec) throw std::runtime_error("cannot list " + dir.string() + ": " + ec.message());
+    for (const fs::directory_entry& e : it) {
         const std::string name = e.path().filename().string();
-        char* end = nullptr;
-        const double t = std::strtod(name.c_str(), &end);
-        if (name.empty() || end != name.c_str() + name.size()) continue;
-        if (!fs::exists(e.path() / "particles.vtu")) continue;
-        dirs.emplace_back(t, name);
+        if (!isTimeName(name) || !e.is_directory(ec)) continue;
+        if (withParticles && !fs::is_regular_file(e.path() / "particles.vtu", ec)) continue;
+        dirs.emplace_back(std::strtod(name.c_str(), nullptr), name);
     }
     std::sort(dirs.begin(), dirs.end());
     return dirs;

@@ -50,4 +50,13 @@ private:
 /// OpenFOAM's time-directory name: %g with `precision` significant digits ("0.05", "1e-05").
 std::string timeName(double t, int precision);
 
+/// A time directory's name: a decimal number, optionally signed and with an exponent ("0",
+/// "0.004", "1e-05"), as bin/tools/CleanFunctions' _cfIsNumber; "inf", "nan" and hex are not.
+bool isTimeName(const std::string& name);
+
+/// The directories of `dir` whose name is a time (isTimeName), sorted by value, then name;
+/// with `withParticles`, only those holding particles.vtu (a complete write).
+std::vector<std::pair<double, std::string>> timeDirectories(const std::filesystem::path& dir,
+                                                            bool withParticles);
+
 } // namespace mpm

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cassert>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -107,6 +108,24 @@ class RunError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+/// Run `body` (returning an exit code) and report what it throws as every mpmFoam program does:
+/// `--> MPMFOAM FATAL IO ERROR` for input errors, `--> MPMFOAM FATAL ERROR` for the rest (bytes
+/// escaped), then "MPMFOAM exiting" and exit code 1. Standard output is flushed first.
+template <class Body> int reportingErrors(Body&& body) {
+    const auto report = [](const char* kind, const std::string& what) {
+        std::cout.flush();
+        std::cerr << "\n--> MPMFOAM FATAL " << kind << ":\n" << what << "\n\nMPMFOAM exiting\n";
+    };
+    try {
+        return body();
+    } catch (const InputError& e) {
+        report("IO ERROR", e.what());
+    } catch (const std::exception& e) {
+        report("ERROR", escapeBytes(e.what()));
+    }
+    return 1;
+}
 
 } // namespace mpm
 

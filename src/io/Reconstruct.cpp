@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/Reconstruct.hpp"
 
+#include "case/Case.hpp"
 #include "io/ParticleFile.hpp"
 
 #include <algorithm>
@@ -106,21 +107,8 @@ std::vector<std::pair<double, std::string>> processorTimes(const fs::path& caseR
                                                            int numProcessors) {
     if (numProcessors < 1)
         throw std::runtime_error(caseRoot.string() + ": no processor directories");
-    const fs::path first = caseRoot / processorName(0);
+    const auto times = timeDirectories(caseRoot / processorName(0), true);
     std::error_code ec;
-    fs::directory_iterator it(first, ec);
-    if (ec) throw std::runtime_error("cannot list " + first.string() + ": " + ec.message());
-    // The time directories as Case::timeDirectories() lists them (the whole name is a number).
-    std::vector<std::pair<double, std::string>> times;
-    for (const fs::directory_entry& e : it) {
-        const std::string name = e.path().filename().string();
-        char* end = nullptr;
-        const double t = std::strtod(name.c_str(), &end);
-        if (name.empty() || end != name.c_str() + name.size() || !e.is_directory(ec)) continue;
-        if (!fs::is_regular_file(e.path() / "particles.vtu", ec)) continue;
-        times.emplace_back(t, name);
-    }
-    std::sort(times.begin(), times.end());
     for (int r = 1; r < numProcessors; ++r) {
         for (const auto& time : times) {
             const std::string piece = pieceName(r, time.second);

@@ -100,22 +100,10 @@ int Application::run(const std::function<void()>& body) const {
           << "PID     : " << getpid() << '\n'
           << "Case    : " << caseDir_ << '\n'
           << "Threads : " << omp_get_max_threads() << "\n\n";
-    try {
+    return reportingErrors([&] {
         body();
         return 0;
-    } catch (const InputError& e) {
-        std::cout.flush();
-        std::cerr << "\n--> MPMFOAM FATAL IO ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
-    } catch (const RunError& e) {
-        std::cout.flush();
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
-                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
-    } catch (const std::exception& e) {
-        std::cout.flush();
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
-                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
-    }
-    return 1;
+    });
 }
 
 void reportPeakMemory(std::ostream& os) {

@@ -5,6 +5,7 @@
 // makeX.py, README.md, ...). Results are not copied: other time directories, processor*/,
 // postProcessing/, *.pvd, log.*, the stop file. The copy is made in a hidden folder beside
 // <to> and renamed into place, so <to> is either complete or absent.
+#include "case/Case.hpp"
 #include "core/Error.hpp"
 
 #include <unistd.h>
@@ -39,30 +40,6 @@ options:
   -latestTime           copy the latest time directory instead of 0/
 
 )";
-
-/// A time directory's name: a decimal number (as bin/tools/CleanFunctions' _cfIsNumber).
-bool isTimeName(const std::string& s) {
-    std::size_t i = 0;
-    const auto digits = [&] {
-        const std::size_t start = i;
-        while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])))
-            ++i;
-        return i - start;
-    };
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t mantissa = digits();
-    if (i < s.size() && s[i] == '.') {
-        ++i;
-        mantissa += digits();
-    }
-    if (mantissa == 0) return false;
-    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-        ++i;
-        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-        if (digits() == 0) return false;
-    }
-    return i == s.size();
-}
 
 bool startsWith(const std::string& s, const std::string& prefix) {
     return s.compare(0, prefix.size(), prefix) == 0;
@@ -102,13 +79,7 @@ bool within(const fs::path& inner, const fs::path& outer) {
 /// The time directory to copy: 0 (none when the case has no 0/), or with -latestTime the
 /// latest one, which must hold particles.vtu (a parallel run's time needs reconstructPar).
 std::string chooseTime(const fs::path& from, bool latestTime) {
-    std::vector<std::pair<double, std::string>> times;
-    for (const auto& e : fs::directory_iterator(from)) {
-        const std::string name = e.path().filename().string();
-        if (e.is_directory() && isTimeName(name))
-            times.emplace_back(std::strtod(name.c_str(), nullptr), name);
-    }
-    std::sort(times.begin(), times.end());
+    const auto times = timeDirectories(from, false);
     if (!latestTime) {
         for (const auto& t : times)
             if (t.first == 0.0) return t.second;
@@ -224,14 +195,8 @@ int main(int argc, char* argv[]) {
         std::cerr << "\n--> MPMFOAM FATAL ERROR: " << escapeBytes(bad) << '\n' << usageText;
         return 1;
     }
-    try {
+    return reportingErrors([&] {
         clone(positional[0], positional[1], latestTime);
         return 0;
-    } catch (const InputError& e) {
-        std::cerr << "\n--> MPMFOAM FATAL IO ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
-    } catch (const std::exception& e) {
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
-                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
-    }
-    return 1;
+    });
 }

@@ -811,13 +811,5 @@ int run(int argc, char* argv[]) {
 } // namespace
 
 int main(int argc, char* argv[]) {
-    try {
-        return run(argc, argv);
-    } catch (const InputError& e) {
-        std::cerr << "\n--> MPMFOAM FATAL IO ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
-    } catch (const std::exception& e) {
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
-                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
-    }
-    return 1;
+    return mpm::reportingErrors([&] { return run(argc, argv); });
 }

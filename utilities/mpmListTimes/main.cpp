@@ -4,6 +4,7 @@
 // the names bin/tools/CleanFunctions removes); the staging folders of a write in progress
 // (`.0.004.writing`) are not numbers and are never listed. -rm removes the listed directories,
 // never 0/, constant/ or system/, and drops them from particles.pvd and rigidBodies.pvd.
+#include "case/Case.hpp"
 #include "core/Error.hpp"
 #include "io/PvdIndex.hpp"
 
@@ -48,43 +49,7 @@ struct Options {
     bool latestTime = false, processor = false, rm = false, withZero = false;
 };
 
-/// A time directory's name: a decimal number (as bin/tools/CleanFunctions' _cfIsNumber).
-bool isTimeName(const std::string& s) {
-    std::size_t i = 0;
-    const auto digits = [&] {
-        const std::size_t start = i;
-        while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])))
-            ++i;
-        return i - start;
-    };
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    std::size_t mantissa = digits();
-    if (i < s.size() && s[i] == '.') {
-        ++i;
-        mantissa += digits();
-    }
-    if (mantissa == 0) return false;
-    if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-        ++i;
-        if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-        if (digits() == 0) return false;
-    }
-    return i == s.size();
-}
-
 using TimeList = std::vector<std::pair<double, std::string>>;
-
-/// The time directories of `dir`, sorted by value (then by name).
-TimeList timeDirectories(const fs::path& dir) {
-    TimeList times;
-    for (const auto& e : fs::directory_iterator(dir)) {
-        const std::string name = e.path().filename().string();
-        if (!e.is_directory() || !isTimeName(name)) continue;
-        times.emplace_back(std::strtod(name.c_str(), nullptr), name);
-    }
-    std::sort(times.begin(), times.end());
-    return times;
-}
 
 /// processor0, processor1, … of a decomposed case, in rank order.
 std::vector<fs::path> processorDirectories(const fs::path& root) {
@@ -125,7 +90,7 @@ void run(const Options& opt) {
         listed = processors.front();
     }
 
-    TimeList times = timeDirectories(listed);
+    TimeList times = timeDirectories(listed, false);
     if (!opt.withZero)
         times.erase(std::remove_if(times.begin(), times.end(),
                                    [](const auto& t) { return t.first == 0.0; }),
@@ -195,14 +160,8 @@ int main(int argc, char* argv[]) {
         std::cerr << "\n--> MPMFOAM FATAL ERROR: " << escapeBytes(bad) << '\n' << usageText;
         return 1;
     }
-    try {
+    return reportingErrors([&] {
         run(opt);
         return 0;
-    } catch (const InputError& e) {
-        std::cerr << "\n--> MPMFOAM FATAL IO ERROR:\n" << e.what() << "\n\nMPMFOAM exiting\n";
-    } catch (const std::exception& e) {
-        std::cerr << "\n--> MPMFOAM FATAL ERROR:\n"
-                  << escapeBytes(e.what()) << "\n\nMPMFOAM exiting\n";
-    }
-    return 1;
+    });
 }
