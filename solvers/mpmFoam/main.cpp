@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // mpmFoam: explicit material point method for granular media, run from an OpenFOAM-style case.
 #include "case/Time.hpp"
+#include "core/Error.hpp"
+#include "core/KeySchema.hpp"
 #include "core/Log.hpp"
 #include "parallel/Comm.hpp"
 #include "solver/Application.hpp"
@@ -10,6 +12,7 @@
 
 #include <cstring>
 #include <iomanip>
+#include <iostream>
 
 using namespace mpm;
 
@@ -23,9 +26,17 @@ int main(int argc, char* argv[]) {
         argc, argv, "mpmFoam", "Explicit MPM for soils and granular media (2D and 3D).",
         {{"-dry-run", "check the case and take one step; write nothing"},
          {"-noFunctionObjects", "do not run controlDict's functions"},
+         {"-list [family]", "list every model type (of one family) with its keys and exit"},
          {"-parallel", "run decomposed (mpirun -np N mpmFoam -parallel)"}},
         "Signals: SIGUSR1 writes now and continues; SIGUSR2 or SIGTERM write and "
         "stop.\nA file named 'stop' in the case directory also writes and stops.");
+    if (app.has("-list")) { // the model catalogue (core/KeySchema.hpp), without the banner
+        const int rc = !comm.master() ? 0 : reportingErrors([&] {
+            ModelCatalogue::list(std::cout, app.value("-list"));
+            return 0;
+        });
+        return comm.finish(rc);
+    }
     const int rc = app.run([&] {
         const Case root(app.caseDir());
         const Case cs = comm.parallel() ? root.processor(comm.rank()) : root;

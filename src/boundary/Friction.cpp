@@ -5,5 +5,9 @@ namespace mpm {
 
 MPM_REGISTER(BoundaryConditionRegistry<2>, Friction<2>, "friction");
 MPM_REGISTER(BoundaryConditionRegistry<3>, Friction<3>, "friction");
+MPM_SCHEMA("boundaryConditions", "friction",
+           {"as slip, with Coulomb friction on the tangential velocity",
+            {{"friction", "scalar", "-", "required", "Coulomb coefficient μ (≥ 0)"}},
+            "{type: friction, friction: 0.5}"});
 
 } // namespace mpm

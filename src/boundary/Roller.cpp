@@ -5,5 +5,9 @@ namespace mpm {
 
 MPM_REGISTER(BoundaryConditionRegistry<2>, Roller<2>, "roller");
 MPM_REGISTER(BoundaryConditionRegistry<3>, Roller<3>, "roller");
+MPM_SCHEMA("boundaryConditions", "roller",
+           {"fixed smooth wall the material can neither enter nor leave (a symmetry plane)",
+            {},
+            "{type: roller}"});
 
 } // namespace mpm

@@ -44,5 +44,12 @@ template class Velocity<3>;
 
 MPM_REGISTER(BoundaryConditionRegistry<2>, Velocity<2>, "velocity");
 MPM_REGISTER(BoundaryConditionRegistry<3>, Velocity<3>, "velocity");
+MPM_SCHEMA("boundaryConditions", "velocity",
+           {"wall moving with velocity w(t): a shear lid, a conveyor, an inflow",
+            {{"value", "vector", "m/s", "none", "constant w (give value or table)"},
+             {"table", "list of [t, vx, vy(, vz)]", "s, m/s", "none",
+              "w(t), linear in t, held beyond the ends (give value or table)"},
+             {"slip", "bool", "-", "no", "yes: smooth moving wall; no: rough, v = w"}},
+            "{type: velocity, value: [0.1, 0]}"});
 
 } // namespace mpm

@@ -251,7 +251,7 @@ std::string yamlValue(const std::string& value) {
 // NOLINTNEXTLINE(performance-unnecessary-value-param)
 Dictionary::Dictionary(YAML::Node node, std::string file, std::string path)
     : node_(node), file_(std::move(file)), path_(std::move(path)),
-      read_(std::make_shared<std::set<std::string>>()) {}
+      read_(std::make_shared<std::set<std::string>>()), help_(std::make_shared<KeyHelp>()) {}
 
 Dictionary Dictionary::fromFile(const std::filesystem::path& file, const std::string& displayName) {
     std::error_code ec;
@@ -544,20 +544,33 @@ void Dictionary::checkUnknownKeys() const {
         if (read_->count(key)) continue;
         const std::string fullKey = path_.empty() ? key : path_ + "." + key;
         const int keyLine = lineOf(it->first.Mark());
-        if (read_->empty()) {
+        // The model's keys, from its schema: what the message lists.
+        std::string help;
+        if (!help_->keys.empty()) {
+            std::string list;
+            for (const auto& k : help_->keys)
+                list += (list.empty() ? "" : ", ") + k;
+            help = " The keys of " + help_->model + " are: " + list + " (" + help_->more + ")";
+        } else if (!help_->model.empty()) {
+            help = " The keys of " + help_->model + " are described in " + help_->more + ".";
+        }
+        std::set<std::string> valid = *read_;
+        valid.insert(help_->keys.begin(), help_->keys.end());
+        if (valid.empty()) {
             throw InputError(file_, keyLine, fullKey,
-                             "unknown key; this dictionary takes no entries");
+                             "unknown key; this dictionary takes no entries." + help);
         }
         const std::string* nearest = nullptr;
         int best = std::numeric_limits<int>::max();
-        for (const auto& valid : *read_) {
-            const int d = editDistance(key, valid);
+        for (const auto& v : valid) {
+            const int d = editDistance(key, v);
             if (d < best) {
                 best = d;
-                nearest = &valid;
+                nearest = &v;
             }
         }
-        throw InputError(file_, keyLine, fullKey, "unknown key; did you mean '" + *nearest + "'?");
+        throw InputError(file_, keyLine, fullKey,
+                         "unknown key; did you mean '" + *nearest + "'?" + help);
     }
 }
 

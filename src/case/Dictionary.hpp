@@ -10,6 +10,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mpm {
@@ -81,8 +82,21 @@ public:
     std::vector<std::string> keys() const;
 
     /// Error on every key never looked up, e.g.
-    /// `constant/grid:7: key 'grid.cellSzie': unknown key; did you mean 'cellSize'?`
+    /// `constant/grid:7: key 'grid.cellSzie': unknown key; did you mean 'cellSize'?`; with a
+    /// KeyHelp the message also lists the model's keys.
     void checkUnknownKeys() const;
+
+    /// What checkUnknownKeys says about the model that reads this map: Registry::create sets it
+    /// from the type's key schema (core/KeySchema.hpp), the table `mpmFoam -list` prints.
+    /// Shared by copies, like the record of read keys.
+    struct KeyHelp {
+        std::string model;             ///< the type, e.g. "linearElastic"
+        std::vector<std::string> keys; ///< every key it reads; empty: the type has no schema
+        std::string more;              ///< where its keys are described ("mpmFoam -list …")
+    };
+    void setKeyHelp(KeyHelp help) const { *help_ = std::move(help); }
+    /// Every key looked up so far (read or tested with has), for the schema tests.
+    const std::set<std::string>& readKeys() const { return *read_; }
 
     /// Throw an InputError located at `key` (or at this map if the key is absent).
     [[noreturn]] void error(const std::string& key, const std::string& message) const;
@@ -105,6 +119,7 @@ private:
     std::string file_;
     std::string path_;
     std::shared_ptr<std::set<std::string>> read_;
+    std::shared_ptr<KeyHelp> help_;
     std::filesystem::path base_;
 };
 

@@ -12,6 +12,12 @@ std::unique_ptr<BodyContactLaw<dim>> BodyContactLaw<dim>::create(const Dictionar
     return BodyContactRegistry<dim>::create(dict);
 }
 
+MPM_FAMILY_INFO("bodyContact", {"type in constant/bodyContact",
+                                "8. constant/rigidBodies",
+                                {{"type", "word", "-", "required", "the body-body contact law"}}});
+MPM_FAMILY(BodyContactRegistry<2>, 2, "bodyContact");
+MPM_FAMILY(BodyContactRegistry<3>, 3, "bodyContact");
+
 template <int dim>
 void ContactProbes<dim>::update(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies) {
     if (points.size() == bodies.size()) return;
@@ -229,6 +235,14 @@ private:
 
 MPM_REGISTER(BodyContactRegistry<2>, LinearSpringContact<2>, "linearSpring");
 MPM_REGISTER(BodyContactRegistry<3>, LinearSpringContact<3>, "linearSpring");
+MPM_SCHEMA("bodyContact", "linearSpring",
+           {"linear springs with friction and restitution, any shapes",
+            {{"normalStiffness", "scalar", "N/m (per metre in 2D)", "required", "k_n (> 0)"},
+             {"tangentialStiffness", "scalar", "N/m (per metre in 2D)", "normalStiffness",
+              "k_t (≥ 0)"},
+             {"friction", "scalar", "-", "0", "Coulomb μ (≥ 0)"},
+             {"restitution", "scalar", "-", "1", "e in [0.14, 1]; 1: no dashpot"}},
+            "{type: linearSpring, normalStiffness: 1.0e7, friction: 0.4, restitution: 0.5}"});
 
 template class BodyContactLaw<2>;
 template class BodyContactLaw<3>;

@@ -39,6 +39,19 @@ std::unique_ptr<CouplingLaw<dim>> CouplingLaw<dim>::create(const Dictionary& dic
 template class CouplingLaw<2>;
 template class CouplingLaw<3>;
 
+MPM_FAMILY_INFO("couplingLaws",
+                {"<body>.coupling.type in constant/rigidBodies",
+                 "8. constant/rigidBodies",
+                 {{"type", "word", "-", "barrier", "the normal law"},
+                  {"friction", "scalar", "-", "0",
+                   "Coulomb μ between the points and the body (≥ 0)"},
+                  {"slipThreshold", "scalar", "-", "0.01",
+                   "s_p/r_p of the friction smoothing [004 Eq. 36] (> 0; not with sdem)"},
+                  {"gasifiedPoints", "word", "-", "grid",
+                   "how a gasified point takes its contact force: grid or local"}}});
+MPM_FAMILY(CouplingLawRegistry<2>, 2, "couplingLaws");
+MPM_FAMILY(CouplingLawRegistry<3>, 3, "couplingLaws");
+
 namespace {
 
 /// Barrier coupling [000 Eq. 21–27], [004 Eq. 33–34]:
@@ -133,5 +146,17 @@ MPM_REGISTER(CouplingLawRegistry<2>, BarrierCoupling<2>, "barrier");
 MPM_REGISTER(CouplingLawRegistry<3>, BarrierCoupling<3>, "barrier");
 MPM_REGISTER(CouplingLawRegistry<2>, LinearSpringCoupling<2>, "linearSpring");
 MPM_REGISTER(CouplingLawRegistry<3>, LinearSpringCoupling<3>, "linearSpring");
+MPM_SCHEMA("couplingLaws", "barrier",
+           {"barrier potential: no point ends a step inside the body [000 Eq. 21-27]",
+            {{"xiBar", "scalar", "-", "0.2",
+              "ξ̄/r_p where the barrier's stiffness equals k_N,crit, in (0, 1)"},
+             {"minimumGap", "scalar", "-", "0.05",
+              "ξ_min/r_p, the smallest gap a point may end a step at, in (0, xiBar)"}},
+            "{type: barrier, friction: 0.3}"});
+MPM_SCHEMA("couplingLaws", "linearSpring",
+           {"linear spring on the overlap [000 §3.2]; points can sink in",
+            {{"stiffness", "scalar", "N/m", "k_N,crit of each point",
+              "spring stiffness k_N (> 0)"}},
+            "{type: linearSpring, friction: 0.3}"});
 
 } // namespace mpm

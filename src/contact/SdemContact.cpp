@@ -179,6 +179,14 @@ void SdemContact::addForces(BodyList& bodies, ContactHistory<2>& history, double
 }
 
 MPM_REGISTER(BodyContactRegistry<2>, SdemContact, "sdem");
+MPM_SCHEMA("bodyContact", "sdem",
+           {"spheropolygon DEM, vertex-edge pairs [001 §3.2] (spheropolygons, boxes, disks)",
+            {{"kn", "scalar", "N/m per metre", "required", "normal stiffness k_n (> 0)"},
+             {"kt", "scalar", "N/m per metre", "kn", "tangential stiffness k_t (≥ 0)"},
+             {"friction", "scalar", "-", "0", "Coulomb μ (≥ 0)"},
+             {"restitution", "scalar", "-", "1", "e in (0, 1]; 1: no dashpot"},
+             {"verletDistance", "scalar", "m", "0.1 R_min", "neighbour-list margin V_d (> 0)"}},
+            "{type: sdem, kn: 6.0e6, kt: 3.0e5, friction: 0.2}"});
 
 namespace {
 const BodyContactRegistry<3>::Add

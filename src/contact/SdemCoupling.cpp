@@ -59,5 +59,15 @@ template class SdemCoupling<3>;
 
 MPM_REGISTER(CouplingLawRegistry<2>, SdemCoupling<2>, "sdem");
 MPM_REGISTER(CouplingLawRegistry<3>, SdemCoupling<3>, "sdem");
+MPM_SCHEMA("couplingLaws", "sdem",
+           {"spheropolygon DEM spring between points and bodies [001 Eq. 43-45]",
+            {{"kn", "scalar", "N/m per metre", "required", "normal stiffness k_n (> 0)"},
+             {"kt", "scalar", "N/m per metre", "0",
+              "tangential stiffness k_t (≥ 0; 0: no friction)"},
+             {"radius", "scalar", "m", "(V_p⁰)^(1/2) of each point",
+              "the points' contact radius r_p (> 0)"},
+             {"verletDistance", "scalar", "m", "0", "neighbour search margin V_d (≥ 0)"}},
+            "{type: sdem, kn: 6.0e6, kt: 3.0e5, friction: 0.2}",
+            2});
 
 } // namespace mpm

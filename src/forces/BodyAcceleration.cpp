@@ -36,4 +36,10 @@ Vec<dim> BodyAcceleration<dim>::readVec(const Dictionary& dict, const std::strin
 template class BodyAcceleration<2>;
 template class BodyAcceleration<3>;
 
+MPM_FAMILY_INFO("bodyAccelerations", {"type in constant/g",
+                                      "5. constant/g",
+                                      {{"type", "word", "-", "constant", "how g varies in time"}}});
+MPM_FAMILY(BodyAccelerationRegistry<2>, 2, "bodyAccelerations");
+MPM_FAMILY(BodyAccelerationRegistry<3>, 3, "bodyAccelerations");
+
 } // namespace mpm

@@ -12,5 +12,9 @@ template class ConstantAcceleration<3>;
 
 MPM_REGISTER(BodyAccelerationRegistry<2>, ConstantAcceleration<2>, "constant");
 MPM_REGISTER(BodyAccelerationRegistry<3>, ConstantAcceleration<3>, "constant");
+MPM_SCHEMA("bodyAccelerations", "constant",
+           {"constant g",
+            {{"value", "vector", "m/s²", "required", "gravitational acceleration g"}},
+            "{type: constant, value: [0, -9.81]}"});
 
 } // namespace mpm

@@ -66,5 +66,13 @@ template class RampAcceleration<3>;
 
 MPM_REGISTER(BodyAccelerationRegistry<2>, RampAcceleration<2>, "ramp");
 MPM_REGISTER(BodyAccelerationRegistry<3>, RampAcceleration<3>, "ramp");
+MPM_SCHEMA("bodyAccelerations", "ramp",
+           {"g turned smoothly from a to b over [t₀, t₀ + T]",
+            {{"value", "vector", "m/s²", "required", "b, g after the ramp"},
+             {"initial", "vector", "m/s²", "zero", "a, g before the ramp"},
+             {"start", "scalar", "s", "0", "t₀"},
+             {"duration", "scalar", "s", "required", "T (> 0)"},
+             {"profile", "word", "-", "cosine", "cosine or smoothstep"}},
+            "{type: ramp, value: [0, -9.81], duration: 0.1}"});
 
 } // namespace mpm

@@ -53,5 +53,15 @@ template class SinusoidalAcceleration<3>;
 
 MPM_REGISTER(BodyAccelerationRegistry<2>, SinusoidalAcceleration<2>, "sinusoidal");
 MPM_REGISTER(BodyAccelerationRegistry<3>, SinusoidalAcceleration<3>, "sinusoidal");
+MPM_SCHEMA(
+    "bodyAccelerations", "sinusoidal",
+    {"g₀ plus a sinusoidal vibration of amplitude A along d (a shaken container's frame)",
+     {{"value", "vector", "m/s²", "required", "g₀, the acceleration without vibration"},
+      {"amplitude", "scalar", "m", "required", "A (≥ 0)"},
+      {"frequency", "scalar", "Hz", "none", "f > 0, ω = 2π f (give frequency or angularFrequency)"},
+      {"angularFrequency", "scalar", "rad/s", "none", "ω > 0"},
+      {"direction", "vector", "-", "required", "d (not zero; normalised)"},
+      {"phase", "scalar", "deg", "0", "φ"}},
+     "{type: sinusoidal, value: [0, -9.81], amplitude: 0.001, frequency: 50, direction: [0, 1]}"});
 
 } // namespace mpm

@@ -64,5 +64,10 @@ template class TableAcceleration<3>;
 
 MPM_REGISTER(BodyAccelerationRegistry<2>, TableAcceleration<2>, "table");
 MPM_REGISTER(BodyAccelerationRegistry<3>, TableAcceleration<3>, "table");
+MPM_SCHEMA("bodyAccelerations", "table",
+           {"g(t) from a table, linear in t",
+            {{"table", "list of [t, gx, gy(, gz)]", "s, m/s²", "required",
+              "≥ 1 row, t increasing"}},
+            "{type: table, table: [[0, 0, -9.81], [1, 0, -4.9]]}"});
 
 } // namespace mpm

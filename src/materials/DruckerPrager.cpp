@@ -2,6 +2,7 @@
 #include "materials/DruckerPrager.hpp"
 
 #include "core/Log.hpp"
+#include "materials/MaterialKeys.hpp"
 
 #include <algorithm>
 #include <iomanip>
@@ -88,5 +89,16 @@ static const MaterialRegistry<2>::Add
     registerDruckerPrager2("druckerPrager", createElastoPlastic<2, DruckerPragerPlasticity>);
 static const MaterialRegistry<3>::Add
     registerDruckerPrager3("druckerPrager", createElastoPlastic<3, DruckerPragerPlasticity>);
+MPM_SCHEMA("materials", "druckerPrager",
+           {"Drucker-Prager plasticity; cohesion, tension cut-off and dilation with elasticity: "
+            "hypoelastic [000], [001 Eq. 31b-36]",
+            elasticKeys() + granularKeys() +
+                KeyList{{"dilationAngle", "scalar", "deg", "0",
+                         "dilation angle ψ, in [0, frictionAngle]: 0 isochoric, = φ associated"},
+                        {"cohesion", "scalar", "Pa", "0",
+                         "cohesion c (≥ 0); > 0 only with elasticity: hypoelastic"},
+                        {"tensionStrength", "scalar", "Pa", "c/tan φ",
+                         "tension cut-off σ_t, in [0, c/tan φ] (the apex of the cone)"}},
+            "{type: druckerPrager, density: 1530, E: 1.0e6, nu: 0.3, frictionAngle: 35}"});
 
 } // namespace mpm

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/HenckyElastic.hpp"
+#include "materials/MaterialKeys.hpp"
 
 namespace mpm {
 
@@ -8,5 +9,8 @@ template class ElastoPlastic<3, HenckyLaw, NoPlasticity>;
 
 MPM_REGISTER(MaterialRegistry<2>, HenckyElastic<2>, "henckyElastic");
 MPM_REGISTER(MaterialRegistry<3>, HenckyElastic<3>, "henckyElastic");
+MPM_SCHEMA("materials", "henckyElastic",
+           {"Hencky hyperelasticity in the elastic left Cauchy-Green tensor [000 Eq. 4-5]",
+            elasticKeys(), "{type: henckyElastic, density: 1100, E: 2.0e5, nu: 0.45}"});
 
 } // namespace mpm

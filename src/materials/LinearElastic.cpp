@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/LinearElastic.hpp"
+#include "materials/MaterialKeys.hpp"
 
 namespace mpm {
 
@@ -8,5 +9,8 @@ template class ElastoPlastic<3, HypoelasticLaw, NoPlasticity>;
 
 MPM_REGISTER(MaterialRegistry<2>, LinearElastic<2>, "linearElastic");
 MPM_REGISTER(MaterialRegistry<3>, LinearElastic<3>, "linearElastic");
+MPM_SCHEMA("materials", "linearElastic",
+           {"linear elasticity, hypoelastic (Jaumann rate) [001 Eq. 25, 36]", elasticKeys(),
+            "{type: linearElastic, density: 1000, E: 1.0e6, nu: 0.3}"});
 
 } // namespace mpm

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/Material.hpp"
 
+#include "core/Registry.hpp"
+
 #include <sstream>
 
 namespace mpm {
@@ -45,5 +47,13 @@ std::vector<std::unique_ptr<Material<dim>>> Material<dim>::createAll(const Dicti
 
 template class Material<2>;
 template class Material<3>;
+
+MPM_FAMILY_INFO("materials",
+                {"<material>.type in constant/materials",
+                 "6. constant/materials",
+                 {{"type", "word", "-", "required", "the model"},
+                  {"density", "scalar", "kg/m³", "required", "initial density ρ₀ (> 0)"}}});
+MPM_FAMILY(MaterialRegistry<2>, 2, "materials");
+MPM_FAMILY(MaterialRegistry<3>, 3, "materials");
 
 } // namespace mpm

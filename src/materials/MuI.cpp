@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/MuI.hpp"
+#include "materials/MaterialKeys.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -36,5 +37,16 @@ template class ElastoPlastic<3, HypoelasticLaw, MuIPlasticity>;
 
 static const MaterialRegistry<2>::Add registerMuI2("muI", createElastoPlastic<2, MuIPlasticity>);
 static const MaterialRegistry<3>::Add registerMuI3("muI", createElastoPlastic<3, MuIPlasticity>);
+MPM_SCHEMA("materials", "muI",
+           {"μ(I) rheology [000 Eq. 9]",
+            elasticKeys() + granularKeys() +
+                KeyList{{"frictionAngle2", "scalar", "deg", "required",
+                         "φ₂ of the limiting friction μ₂, in (frictionAngle, 90)"},
+                        {"I0", "scalar", "-", "0.278", "I₀ of μ(I) (> 0)"},
+                        {"grainDiameter", "scalar", "m", "required", "mean grain size d (> 0)"},
+                        {"grainDensity", "scalar", "kg/m³", "required",
+                         "grain (solid) density ρ_s (> 0)"}},
+            "{type: muI, density: 1530, E: 1.0e6, nu: 0.3, frictionAngle: 20.9, frictionAngle2: "
+            "32.8, grainDiameter: 0.0007, grainDensity: 2600}"});
 
 } // namespace mpm

@@ -4,6 +4,7 @@
 #include "core/Parallel.hpp"
 #include "materials/FlowRules.hpp"
 #include "materials/HenckyBatch.hpp"
+#include "materials/MaterialKeys.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -237,5 +238,26 @@ template class ViscoelasticMuI<3>;
 
 MPM_REGISTER(MaterialRegistry<2>, ViscoelasticMuI<2>, "viscoelasticMuI");
 MPM_REGISTER(MaterialRegistry<3>, ViscoelasticMuI<3>, "viscoelasticMuI");
+MPM_SCHEMA("materials", "viscoelasticMuI",
+           {"viscoelastic μ(I) of [002], damped through the grains' coefficient of restitution",
+            elasticKeys() +
+                KeyList{{"frictionAngle", "scalar", "deg", "required",
+                         "φ_s: μ_s = tan φ_s, in (0, 90)"},
+                        {"frictionAngle2", "scalar", "deg", "required",
+                         "φ₂: μ₂ = tan φ₂, in (frictionAngle, 90)"},
+                        {"I0", "scalar", "-", "0.278", "I₀ of μ(I) (> 0)"},
+                        {"grainDiameter", "scalar", "m", "required", "grain size d (> 0)"},
+                        {"grainDensity", "scalar", "kg/m³", "required",
+                         "grain density ρ_s (> 0; φ₀ = density/ρ_s)"},
+                        {"restitution", "scalar", "-", "none",
+                         "e in (0, 1]: ϑ and η from [002 Eq. 40, 42]; not with bulkViscosity"},
+                        {"bulkViscosity", "scalar", "Pa·s", "0",
+                         "ϑ (≥ 0) directly (not with restitution)"},
+                        {"shearViscosity", "scalar", "Pa·s", "(G/K) ϑ",
+                         "η (≥ 0) directly (not with restitution)"},
+                        {"criticalDensity", "scalar", "kg/m³", "density",
+                         "ρ_c (≥ 0): a point with ρ ≤ ρ_c carries no stress"}},
+            "{type: viscoelasticMuI, density: 1500, E: 1.0e6, nu: 0.3, frictionAngle: 20.9, "
+            "frictionAngle2: 32.8, grainDiameter: 0.001, grainDensity: 2500, restitution: 0.5}"});
 
 } // namespace mpm

@@ -37,5 +37,9 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, BoundaryReaction<2>, "boundaryReaction");
 MPM_REGISTER(FunctionObjectRegistry<3>, BoundaryReaction<3>, "boundaryReaction");
+MPM_SCHEMA("functionObjects", "boundaryReaction",
+           {"the force of the material on each grid face [N] (N/m in 2D)",
+            {},
+            "{type: boundaryReaction}"});
 
 } // namespace mpm

@@ -60,5 +60,9 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, CentreOfMass<2>, "centreOfMass");
 MPM_REGISTER(FunctionObjectRegistry<3>, CentreOfMass<3>, "centreOfMass");
+MPM_SCHEMA("functionObjects", "centreOfMass",
+           {"mass, centre of mass and its velocity",
+            {{"material", "string", "-", "all points", "the material to report"}},
+            "{type: centreOfMass, material: sand}"});
 
 } // namespace mpm

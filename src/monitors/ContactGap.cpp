@@ -38,5 +38,9 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, ContactGap<2>, "contactGap");
 MPM_REGISTER(FunctionObjectRegistry<3>, ContactGap<3>, "contactGap");
+MPM_SCHEMA("functionObjects", "contactGap",
+           {"the smallest point-body gap and the number of point-body contacts",
+            {},
+            "{type: contactGap}"});
 
 } // namespace mpm

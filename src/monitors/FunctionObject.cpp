@@ -80,4 +80,14 @@ FunctionObject<dim>::createAll(const Dictionary& controlDict) {
 template class FunctionObject<2>;
 template class FunctionObject<3>;
 
+MPM_FAMILY_INFO("functionObjects",
+                {"functions.<name>.type in system/controlDict",
+                 "2. system/controlDict",
+                 {{"type", "word", "-", "required", "the function object"},
+                  {"writeControl", "word", "-", "timeStep", "the schedule: timeStep or runTime"},
+                  {"writeInterval", "integer or scalar", "steps or s", "1 or 0",
+                   "every N steps (timeStep), or every interval (runTime; 0: every step)"}}});
+MPM_FAMILY(FunctionObjectRegistry<2>, 2, "functionObjects");
+MPM_FAMILY(FunctionObjectRegistry<3>, 3, "functionObjects");
+
 } // namespace mpm

@@ -68,5 +68,10 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, IntrusionDepth<2>, "intrusionDepth");
 MPM_REGISTER(FunctionObjectRegistry<3>, IntrusionDepth<3>, "intrusionDepth");
+MPM_SCHEMA("functionObjects", "intrusionDepth",
+           {"how deep a rigid body has entered the material, along -g",
+            {{"body", "string", "-", "required", "the body"},
+             {"surface", "scalar", "m", "top of the particles", "height z_s of the free surface"}},
+            "{type: intrusionDepth, body: ball, surface: 0.1}"});
 
 } // namespace mpm

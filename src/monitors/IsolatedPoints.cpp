@@ -90,5 +90,11 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, IsolatedPoints<2>, "isolatedPoints");
 MPM_REGISTER(FunctionObjectRegistry<3>, IsolatedPoints<3>, "isolatedPoints");
+MPM_SCHEMA("functionObjects", "isolatedPoints",
+           {"points with no other point within a radius (a gas of points)",
+            {{"radius", "scalar", "m", "h", "neighbour radius r (> 0)"},
+             {"warnAbove", "scalar", "-", "0.05",
+              "warn once when the fraction exceeds it, in [0, 1]"}},
+            "{type: isolatedPoints, radius: 0.01}"});
 
 } // namespace mpm

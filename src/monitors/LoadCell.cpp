@@ -66,5 +66,10 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, LoadCell<2>, "loadCell");
 MPM_REGISTER(FunctionObjectRegistry<3>, LoadCell<3>, "loadCell");
+MPM_SCHEMA("functionObjects", "loadCell",
+           {"one face's reaction and its moving average, sampled every step",
+            {{"face", "word", "-", "required", "the face: xMin xMax yMin yMax (zMin zMax in 3D)"},
+             {"window", "scalar", "s", "0", "averaging window (≥ 0; 0: the raw value)"}},
+            "{type: loadCell, face: yMin, window: 0.01}"});
 
 } // namespace mpm

@@ -234,5 +234,13 @@ private:
 
 MPM_REGISTER(FunctionObjectRegistry<2>, Probes<2>, "probes");
 MPM_REGISTER(FunctionObjectRegistry<3>, Probes<3>, "probes");
+MPM_SCHEMA("functionObjects", "probes",
+           {"material point fields at fixed points (mass-weighted Shepard average)",
+            {{"probeLocations", "list of vectors", "m", "required",
+              "the probes, each inside the grid box"},
+             {"fields", "list of words", "-", "[pressure]",
+              "pressure density velocity stress plasticStrain, or a model scalar"},
+             {"radius", "scalar", "m", "1.5 h", "sampling radius R (> 0)"}},
+            "{type: probes, probeLocations: [[0.1, 0.05]], fields: [pressure, velocity]}"});
 
 } // namespace mpm

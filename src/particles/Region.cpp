@@ -205,6 +205,12 @@ private:
     double area_ = 0.0, volume_ = 0.0;
 };
 
+MPM_FAMILY_INFO("regions", {"<set>.region.type in constant/particles",
+                            "7. constant/particles",
+                            {{"type", "word", "-", "required", "the region's shape"}}});
+MPM_FAMILY(Registry<Region<2>>, 2, "regions");
+MPM_FAMILY(Registry<Region<3>>, 3, "regions");
+
 MPM_REGISTER(Registry<Region<2>>, BoxRegion<2>, "box");
 MPM_REGISTER(Registry<Region<3>>, BoxRegion<3>, "box");
 MPM_REGISTER(Registry<Region<2>>, SphereRegion<2>, "sphere");
@@ -215,6 +221,37 @@ MPM_REGISTER(Registry<Region<2>>, CylinderRegion<2>, "cylinder");
 MPM_REGISTER(Registry<Region<3>>, CylinderRegion<3>, "cylinder");
 MPM_REGISTER(Registry<Region<2>>, PolygonRegion<2>, "polygon");
 MPM_REGISTER(Registry<Region<3>>, PolygonRegion<3>, "polygon");
+MPM_SCHEMA("regions", "box",
+           {"an axis-aligned box",
+            {{"min", "vector", "m", "required", "lower corner"},
+             {"max", "vector", "m", "required", "upper corner (> min)"}},
+            "{type: box, min: [0, 0], max: [0.1, 0.1]}"});
+MPM_SCHEMA("regions", "disk",
+           {"a disk",
+            {{"centre", "vector", "m", "required", "centre"},
+             {"radius", "scalar", "m", "required", "radius (> 0)"}},
+            "{type: disk, centre: [0.1, 0.1], radius: 0.05}",
+            2});
+MPM_SCHEMA("regions", "sphere",
+           {"a ball",
+            {{"centre", "vector", "m", "required", "centre"},
+             {"radius", "scalar", "m", "required", "radius (> 0)"}},
+            "{type: sphere, centre: [0.1, 0.1, 0.1], radius: 0.05}",
+            3});
+MPM_SCHEMA("regions", "cylinder",
+           {"a solid cylinder with flat caps",
+            {{"p1", "vector", "m", "required", "one end of the axis"},
+             {"p2", "vector", "m", "required", "the other end (≠ p1)"},
+             {"radius", "scalar", "m", "required", "radius (> 0)"}},
+            "{type: cylinder, p1: [0.1, 0.1, 0], p2: [0.1, 0.1, 0.2], radius: 0.05}",
+            3});
+MPM_SCHEMA("regions", "polygon",
+           {"a polygon (even-odd rule); in 3D a prism extruded along an axis",
+            {{"vertices", "list of [x, y]", "m", "required",
+              "≥ 3 vertices; in 3D in the two axes other than extrude.axis"},
+             {"extrude", "map {axis, min, max}", "m", "none (3D: required)",
+              "3D: the prism's axis x, y or z and its extent [min, max]"}},
+            "{type: polygon, vertices: [[0, 0], [0.1, 0], [0, 0.1]]}"});
 
 } // namespace
 } // namespace mpm

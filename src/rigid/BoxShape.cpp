@@ -103,5 +103,11 @@ template class BoxShape<3>;
 
 MPM_REGISTER(ShapeRegistry<2>, BoxShape<2>, "box");
 MPM_REGISTER(ShapeRegistry<3>, BoxShape<3>, "box");
+MPM_SCHEMA("shapes", "box",
+           {"a box (a rectangle in 2D)",
+            {{"halfExtents", "vector", "m", "none",
+              "half edge lengths h > 0 (give halfExtents or size)"},
+             {"size", "vector", "m", "none", "edge lengths 2h > 0"}},
+            "{type: box, size: [0.1, 0.05]}"});
 
 } // namespace mpm

@@ -249,5 +249,11 @@ void LevelSetShape::buildSurface() {
 
 MPM_REGISTER(ShapeRegistry<3>, LevelSetShape, "levelSet");
 MPM_REGISTER(ShapeRegistry<2>, LevelSetShape2D, "levelSet");
+MPM_SCHEMA("shapes", "levelSet",
+           {"any closed mesh, through a level set",
+            {{"file", "string", "-", "required",
+              "the .vti written by surfaceToLevelSet (relative to the case)"}},
+            "{type: levelSet, file: constant/levelSets/rock.vti}",
+            3});
 
 } // namespace mpm

@@ -10,4 +10,10 @@ template <int dim> std::unique_ptr<Shape<dim>> Shape<dim>::create(const Dictiona
 template class Shape<2>;
 template class Shape<3>;
 
+MPM_FAMILY_INFO("shapes", {"<body>.shape.type in constant/rigidBodies",
+                           "8. constant/rigidBodies",
+                           {{"type", "word", "-", "required", "the body's shape"}}});
+MPM_FAMILY(ShapeRegistry<2>, 2, "shapes");
+MPM_FAMILY(ShapeRegistry<3>, 3, "shapes");
+
 } // namespace mpm

@@ -100,5 +100,15 @@ MPM_REGISTER(ShapeRegistry<2>, SphereShape<2>, "disk");
 MPM_REGISTER(ShapeRegistry<2>, SphereShape<2>, "sphere");
 MPM_REGISTER(ShapeRegistry<3>, SphereShape<3>, "sphere");
 MPM_REGISTER(ShapeRegistry<3>, SphereShape<3>, "disk");
+MPM_SCHEMA("shapes", "sphere",
+           {"a sphere",
+            {{"radius", "scalar", "m", "required", "radius (> 0)"}},
+            "{type: sphere, radius: 0.019}",
+            3});
+MPM_SCHEMA("shapes", "disk",
+           {"a disk",
+            {{"radius", "scalar", "m", "required", "radius (> 0)"}},
+            "{type: disk, radius: 0.019}",
+            2});
 
 } // namespace mpm

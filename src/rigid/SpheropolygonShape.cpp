@@ -222,6 +222,13 @@ void SpheropolygonShape::surface(std::vector<Vec3>& points,
 }
 
 MPM_REGISTER(ShapeRegistry<2>, SpheropolygonShape, "spheropolygon");
+MPM_SCHEMA("shapes", "spheropolygon",
+           {"a convex polygon rounded by a disk [001 Eq. 37]",
+            {{"vertices", "list of [x, y]", "m", "required",
+              "1: disk, 2: capsule, ≥ 3: convex polygon, counter-clockwise"},
+             {"radius", "scalar", "m", "required",
+              "sphero-radius a ≥ 0 (> 0 with fewer than 3 vertices)"}},
+            "{type: spheropolygon, vertices: [[0, 0], [0.02, 0], [0, 0.02]], radius: 0.001}"});
 
 namespace {
 const ShapeRegistry<3>::Add

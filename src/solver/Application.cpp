@@ -39,6 +39,12 @@ Application::Application(int argc, char* argv[], std::string name, std::string s
                                [&](const Option& o) { return o.first == a; })) {
             given_.push_back(a);
         } else if (std::any_of(switches_.begin(), switches_.end(), [&](const Option& o) {
+                       return o.first.compare(0, a.size() + 2, a + " [") == 0;
+                   })) {
+            // An optional value (`-list [family]`): the next word unless it is an option.
+            given_.push_back(a);
+            if (i + 1 < argc && argv[i + 1][0] != '-') values_.emplace_back(a, argv[++i]);
+        } else if (std::any_of(switches_.begin(), switches_.end(), [&](const Option& o) {
                        return o.first.compare(0, a.size() + 2, a + " <") == 0;
                    })) {
             if (i + 1 >= argc) {

@@ -13,7 +13,8 @@ namespace mpm {
 
 /// Command line, banner and error reporting shared by mpmFoam and the utilities
 /// (OpenFOAM's argList): `-case DIR`, `-help`, plus the program's own options: a switch
-/// (`-latestTime`) or, written with a placeholder (`-time <t>`), an option taking a value.
+/// (`-latestTime`) or, written with a placeholder (`-time <t>`), an option taking a value, or
+/// (`-list [family]`) one whose value is optional.
 class Application {
 public:
     using Option = std::pair<std::string, std::string>; ///< option, description

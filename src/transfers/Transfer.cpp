@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transfers/Transfer.hpp"
 #include "core/Parallel.hpp"
+#include "core/Registry.hpp"
 #include "core/Stream.hpp"
 
 #include "kernels/Kernels.hpp"
@@ -518,7 +519,42 @@ std::unique_ptr<Transfer<dim>> makeFor(K kernel, const std::string& scheme, doub
     return std::make_unique<TransferImpl<dim, K, false>>(kernel, ratio);
 }
 
+std::vector<std::string> transferNames() {
+    return {"pic", "flip", "apic"};
+}
+
 } // namespace
+
+// Kernels and transfers are words of system/mpmSchemes rather than registries; their families
+// list the same names the reader accepts.
+MPM_FAMILY_INFO("kernels", {"kernel in system/mpmSchemes (a word)", "3. system/mpmSchemes", {}});
+static const ModelCatalogue::AddTypes kernels2("kernels", 2, kernelNames);
+static const ModelCatalogue::AddTypes kernels3("kernels", 3, kernelNames);
+MPM_SCHEMA("kernels", "linear",
+           {"linear hat functions (C0; grid-crossing noise)", {}, "kernel: linear"});
+MPM_SCHEMA("kernels", "gimp",
+           {"generalised interpolation MPM, the particle half-width from the seeding",
+            {},
+            "kernel: gimp"});
+MPM_SCHEMA("kernels", "quadraticBSpline",
+           {"quadratic B-spline (C1; APIC's constant inertia)", {}, "kernel: quadraticBSpline"});
+MPM_SCHEMA("kernels", "cubicBSpline",
+           {"cubic B-spline (C2; APIC's constant inertia)", {}, "kernel: cubicBSpline"});
+
+MPM_FAMILY_INFO("transfers",
+                {"transfer in system/mpmSchemes (a word, or a map with type)",
+                 "3. system/mpmSchemes",
+                 {{"type", "word", "-", "required", "the transfer (in the map form)"}}});
+static const ModelCatalogue::AddTypes transfers2("transfers", 2, transferNames);
+static const ModelCatalogue::AddTypes transfers3("transfers", 3, transferNames);
+MPM_SCHEMA("transfers", "pic",
+           {"particle-in-cell: the points take the grid velocity", {}, "transfer: pic"});
+MPM_SCHEMA("transfers", "flip",
+           {"PIC/FLIP blend: the points take a fraction η of the grid's velocity change",
+            {{"ratio", "scalar", "-", "0.995", "FLIP fraction η, in [0, 1]"}},
+            "transfer: {type: flip, ratio: 0.99}"});
+MPM_SCHEMA("transfers", "apic",
+           {"affine PIC (quadraticBSpline or cubicBSpline kernels)", {}, "transfer: apic"});
 
 template <int dim>
 std::unique_ptr<Transfer<dim>> Transfer<dim>::create(const Dictionary& schemes,
@@ -526,11 +562,12 @@ std::unique_ptr<Transfer<dim>> Transfer<dim>::create(const Dictionary& schemes,
     const std::string kernel = schemes.getWord("kernel", kernelNames());
     std::string scheme;
     double ratio = 0.0;
-    const std::vector<std::string> schemesValid{"pic", "flip", "apic"};
+    const std::vector<std::string> schemesValid = transferNames();
     if (schemes.isDict("transfer")) {
         const Dictionary t = schemes.subDict("transfer");
         scheme = t.getWord("type", schemesValid);
         if (scheme == "flip") ratio = t.getScalarOr("ratio", 0.995, Bounds::closed(0.0, 1.0));
+        setKeyHelp(t, "transfers", scheme);
         t.checkUnknownKeys();
     } else {
         scheme = schemes.getWord("transfer", schemesValid);

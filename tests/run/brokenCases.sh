@@ -16,7 +16,8 @@
 #   - stderr has `--> MPMFOAM FATAL IO ERROR:` and names the file and the key;
 #   - the message is located `file:LINE: ` (unless noLine);
 #   - nothing was written into the case (no time directory, particles.pvd, postProcessing).
-# Then a few command-line errors: unknown option -> 1, -help -> 0, missing case folder -> 1.
+# Then a few command-line checks: unknown option -> 1, -help -> 0, -list -> 0 (its families),
+# -list of an unknown family -> 1, missing case folder -> 1.
 #
 # tests/brokenCases/KNOWN_FAILURES lists cases whose defect the solver does not report yet
 # (one name per line, '#' comments allowed). They are run and reported as KNOWN; they fail the
@@ -170,6 +171,21 @@ if ! grep -q 'Usage' "$work/cli.out"; then
     nFail=$((nFail + 1))
     failures+=("cli:-help-usage")
 fi
+cli "cli: -list" 0 -list
+for family in materials boundaryConditions functionObjects shapes; do
+    if ! grep -q "^$family, selected by" "$work/cli.out"; then
+        rows+=("$(printf '%-34s %-4s %-6s %s' "cli: -list names $family" "-" "FAIL" "no '$family' family in -list")")
+        nFail=$((nFail + 1))
+        failures+=("cli:-list-$family")
+    fi
+done
+cli "cli: -list materials" 0 -list materials
+if ! grep -q "^  druckerPrager (2D, 3D)" "$work/cli.out" || grep -q "^shapes" "$work/cli.out"; then
+    rows+=("$(printf '%-34s %-4s %-6s %s' "cli: -list materials only" "-" "FAIL" "not the materials alone")")
+    nFail=$((nFail + 1))
+    failures+=("cli:-list-materials")
+fi
+cli "cli: -list unknown family" 1 -list noSuchFamily
 cli "cli: missing case directory" 1 -case "$work/doesNotExist"
 cli "cli: -case without a directory" 1 -case
 cli "cli: folder without system/" 1 -case "$work/notACase"
