@@ -6,6 +6,7 @@
 // postProcessing/, *.pvd, log.*, the stop file. The copy is made in a hidden folder beside
 // <to> and renamed into place, so <to> is either complete or absent.
 #include "case/Case.hpp"
+#include "case/CaseDirectory.hpp"
 #include "core/Error.hpp"
 
 #include <unistd.h>
@@ -98,12 +99,7 @@ std::string chooseTime(const fs::path& from, bool latestTime) {
 }
 
 void clone(const fs::path& from, const fs::path& to, bool latestTime) {
-    if (!fs::is_directory(from))
-        throw InputError(from.string(), 0, "", "the case to clone does not exist");
-    if (!fs::is_regular_file(from / "system/controlDict") &&
-        !fs::is_regular_file(from / "system/controlDict.yaml"))
-        throw InputError(from.string(), 0, "",
-                         "not a case directory: it has no system/controlDict");
+    requireCaseDirectory(from, "the case to clone does not exist");
     if (fs::exists(fs::symlink_status(to)))
         throw InputError(to.string(), 0, "",
                          "already exists; mpmCloneCase never writes into an existing folder "

@@ -5,6 +5,7 @@
 // (`.0.004.writing`) are not numbers and are never listed. -rm removes the listed directories,
 // never 0/, constant/ or system/, and drops them from particles.pvd and rigidBodies.pvd.
 #include "case/Case.hpp"
+#include "case/CaseDirectory.hpp"
 #include "core/Error.hpp"
 #include "io/PvdIndex.hpp"
 
@@ -72,12 +73,7 @@ std::vector<fs::path> processorDirectories(const fs::path& root) {
 
 void run(const Options& opt) {
     const fs::path root = opt.caseDir;
-    if (!fs::is_directory(root))
-        throw InputError(root.string(), 0, "", "the case directory does not exist");
-    if (!fs::is_regular_file(root / "system/controlDict") &&
-        !fs::is_regular_file(root / "system/controlDict.yaml"))
-        throw InputError(root.string(), 0, "",
-                         "not a case directory: it has no system/controlDict");
+    requireCaseDirectory(root, "the case directory does not exist");
 
     std::vector<fs::path> processors;
     fs::path listed = root;
