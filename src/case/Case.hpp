@@ -9,7 +9,7 @@
 
 namespace mpm {
 
-/// The case folder (DESIGN §3): paths and the dictionaries in system/ and constant/.
+/// The case folder (docs/caseFormat.md §1): paths and the dictionaries in system/ and constant/.
 class Case {
 public:
     explicit Case(std::filesystem::path root);

@@ -15,7 +15,7 @@
 
 namespace mpm {
 
-/// Particle–rigid-body coupling of all bodies (DESIGN §4, [000 §3], [004 §4]).
+/// Particle–rigid-body coupling of all bodies (docs/architecture.md, [000 §3], [004 §4]).
 ///
 /// Per step: (1) broad phase — only particles in grid blocks overlapping a body's bounding
 /// sphere grown by r_p (plus the law's search band) are tested, every step; (2) narrow phase —

@@ -15,13 +15,13 @@ namespace mpm {
 
 /// Uniform background grid over the box [lo, hi], padded by `Pad` cells of ghost nodes on each
 /// side so that every kernel's stencil stays inside the arrays for points within one cell of the
-/// box. Nodes are grouped in blocks of 4^dim (the race-free P2G of DESIGN §4) and numbered block
-/// by block: node (i, j, k) is entry 4^dim b + (i mod 4) + 4 (j mod 4) + 16 (k mod 4) of block
-/// b = (i/4) + nb_x ((j/4) + nb_y (k/4)). The numbering is a sum of one offset per axis
-/// (axisOffset), so a stencil costs dim·W offsets, and a block's nodes are contiguous, so the
-/// node fields (NodeArray) commit memory block by block where the material is: the grid is
-/// sparse (docs/sparseGrid.md). Only the active blocks, those the material's stencils reach
-/// (activate), hold non-zero values.
+/// box. Nodes are grouped in blocks of 4^dim (the race-free P2G of docs/architecture.md) and
+/// numbered block by block: node (i, j, k) is entry 4^dim b + (i mod 4) + 4 (j mod 4)
+/// + 16 (k mod 4) of block b = (i/4) + nb_x ((j/4) + nb_y (k/4)). The numbering is a sum of one
+/// offset per axis (axisOffset), so a stencil costs dim·W offsets, and a block's nodes are
+/// contiguous, so the node fields (NodeArray) commit memory block by block where the material
+/// is: the grid is sparse (docs/sparseGrid.md). Only the active blocks, those the material's
+/// stencils reach (activate), hold non-zero values.
 /// Eight doubles in one 64-byte line: a node's packed transfer data (Grid::lines).
 struct alignas(64) NodeLine {
     double v[8];

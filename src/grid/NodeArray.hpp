@@ -20,7 +20,7 @@ void releaseMapping(void* p, std::size_t bytes);
 /// pages at the ends are written with zeros.
 void zeroAndRelease(void* p, std::size_t bytes);
 
-/// A field of the sparse grid (DESIGN §4, docs/sparseGrid.md): one T per node of the whole
+/// A field of the sparse grid (docs/sparseGrid.md): one T per node of the whole
 /// box, zero-initialised, whose memory follows the material. The array is reserved for every
 /// node of the box but only the pages written are committed, so a box of 10⁸ cells costs
 /// address space, not memory, where no material is; release() hands the pages of blocks the

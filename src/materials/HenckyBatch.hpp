@@ -12,8 +12,8 @@
 namespace mpm {
 
 /// Lanes particles of a Hencky update in structure-of-arrays form, so that every step of the
-/// update vectorises across particles (DESIGN §7): the trial bᵉ = f bᵉ fᵀ (f = 1 + Δt L), its
-/// Hencky strain ε = ½ ln bᵉ and the stress τ(ε)/J, all as tensors.
+/// update vectorises across particles (docs/architecture.md): the trial bᵉ = f bᵉ fᵀ
+/// (f = 1 + Δt L), its Hencky strain ε = ½ ln bᵉ and the stress τ(ε)/J, all as tensors.
 /// Symmetric tensors are kept as their six entries (00 11 22 01 02 12).
 template <int Lanes> struct HenckyBatch {
     Index idx[Lanes];                ///< the particles; a short last batch repeats its last one

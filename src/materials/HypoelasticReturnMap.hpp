@@ -40,7 +40,7 @@
 // in the energy norm. With the default σ_t = k/μ the corner is the apex (τ_C = 0) and the tension
 // region is empty; c = 0 and σ_t = 0 send every trial beyond the normal line to zero stress.
 // The plastic shear strain increment is Δλ in shear, a = (τ_tr − τ_C)/G at the corner, 0 in
-// tension. (The reading notes' FLAC rule, seed001-notes §1.2, bounds the shear region by the
+// tension. (FLAC's rule for Drucker–Prager with a tension cut-off bounds the shear region by the
 // diagonal through C with slope √(1 + μ²) − μ instead and clamps τ afterwards; the two differ
 // only in the wedge between that diagonal and the normal line, where FLAC does not return to the
 // closest point.)

@@ -31,7 +31,7 @@ struct ElasticConstants {
 enum class ElasticLaw { hypoelastic, hencky };
 
 /// A constitutive model. One object serves all particles of one named material; the solver
-/// calls it once per step with their indices (no per-particle virtual call, DESIGN §7).
+/// calls it once per step with their indices (no per-particle virtual call, docs/architecture.md).
 template <int dim> class Material {
 public:
     Material(const Dictionary& dict, std::string name);

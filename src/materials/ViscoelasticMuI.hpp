@@ -17,7 +17,7 @@ double restitutionViscosity(double restitution, double grainDiameter, double pWa
 /// Continuum coefficient of restitution of a linear-viscoelastic body given an impulsive
 /// dilatational mode of wavenumber k [002 Eq. 35–37], as a function of ζ = k ϑ / (2√(M ρ))
 /// (ζ = π ϑ̃/2 for the sphere, ϑ̃ = ϑ/(a√(Mρ)) [002 Eq. 36]). Real-valued for every ζ ≥ 0
-/// (the printed Eq. 37 is complex beyond ϑ̃ = 2/π; seed002-notes §1.2):
+/// (the printed Eq. 37 is complex beyond ϑ̃ = 2/π):
 ///   ζ < 1: ℰ = exp(−ζ (π − 2 asin ζ)/√(1 − ζ²)),  ζ = 1: e⁻²,
 ///   ζ > 1: ℰ = exp(−(2ζ/√(ζ² − 1)) artanh(√(ζ² − 1)/ζ)).
 double continuumRestitution(double zeta);
@@ -31,7 +31,7 @@ enum ViscoelasticState : int { elasticState = 0, flowingState = 1, separatedStat
 ///   only [Eq. 13], μ(I) flow τ = μ(I) p [Eq. 43–44] with I = γ̇ᵖ d √(ρ_s/p), isochoric
 ///   Dᵖ = γ̇ᵖ σ_dev/(2τ) [Eq. 48–49], and no tension: σ = σᵉ = 0 when p_tr ≤ 0 or ρ ≤ ρ_c
 ///   [Eq. 46–47].
-/// Per step and point (App. A; seed002-notes §1.3), with ΔF = 1 + Δt L, D = sym L, W = skw L:
+/// Per step and point ([002 §3.2], App. A), with ΔF = 1 + Δt L, D = sym L, W = skw L:
 ///   1. σᵉ_tr = Q σᵉ Qᵀ + ℂ : Δt D, Q = exp(Δt W) (exact for a rigid rotation, [Eq. 52]; the
 ///      increment in the end-of-step frame, docs/viscoelastic.md §5);
 ///   2. σ_tr = σᵉ_tr + ϑ tr D 1 + 2η D_dev [Eq. 51]; p_tr = −tr σ_tr/3, τ_tr = √(½ s_tr : s_tr);

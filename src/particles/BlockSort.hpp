@@ -12,7 +12,7 @@
 namespace mpm {
 
 /// Particles bucketed by 4^dim-cell grid block (a stable radix sort of indices by block,
-/// DESIGN §4), in time and memory traffic proportional to the particles and the occupied
+/// docs/architecture.md), in time and memory traffic proportional to the particles and the occupied
 /// blocks, not to the box: a sparse grid of 10⁸ cells costs a per-block index and flag (5 B a
 /// block, touched only where the material is), nothing per step.
 ///

@@ -33,7 +33,7 @@ template <class T> struct StateField {
     std::vector<T> data;
 };
 
-/// Material points as a structure of arrays, one array per field (DESIGN §7).
+/// Material points as a structure of arrays, one array per field (docs/architecture.md).
 ///
 /// The field table (visitTable) declares every field once — name, type, whether a restart needs
 /// it, whether it is written — and sorting, compaction, VTU writing, restart reading and the

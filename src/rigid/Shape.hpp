@@ -14,7 +14,7 @@ namespace mpm {
 struct SpheroPolygon;
 
 /// Geometry of a rigid body in its own frame: origin at the centroid, axes along the
-/// principal axes of inertia (DESIGN §5, [004 §4.2]). The coupling asks only for the signed
+/// principal axes of inertia ([004 §4.2]). The coupling asks only for the signed
 /// distance and normal, so a level-set grid (next issue) is one more Shape.
 template <int dim> class Shape {
 public:

@@ -32,7 +32,8 @@
 
 namespace mpm {
 
-/// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of DESIGN §4.
+/// Explicit MPM in dim dimensions: owns the state; step() is the list of phases of
+/// docs/architecture.md ("The step").
 template <int dim> class MpmSimulation final : public Simulation, private StressPhases {
 public:
     /// `cs`: the case, or this rank's processor case (Case::processor) in a parallel run.

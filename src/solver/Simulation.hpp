@@ -27,7 +27,7 @@ public:
     virtual void start(Time& time) = 0;
     /// The largest stable Δt now: maxCo · h / max(c + |v|) [s].
     virtual double stableDeltaT() const = 0;
-    /// One explicit MPM step of size dt (DESIGN §4).
+    /// One explicit MPM step of size dt (docs/architecture.md).
     virtual void step(double dt) = 0;
     /// Run the function objects due at this time.
     virtual void executeFunctions() = 0;

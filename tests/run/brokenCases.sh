@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Broken-case suite (DESIGN §8: bad input gets a clear error, never a crash or a hang).
+# Broken-case suite (docs/architecture.md, "Reliability": bad input gets a clear error, never
+# a crash or a hang).
 #
 # Every folder tests/brokenCases/<name>/ is a tiny valid 2D case with exactly one defect, and
 # its file `expect` says what the error must name:

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Determinism (DESIGN §4, §8): for a 2D FLIP/GIMP case and a 3D APIC/Hencky case,
+# Determinism (docs/architecture.md, "Determinism"): for a 2D FLIP/GIMP case and a 3D
+# APIC/Hencky case,
 #  1. OMP_NUM_THREADS=1 and 2 give bit-identical particles.vtu at every write and identical
 #     function-object output;
 #  2. a run 0 → T and a run 0 → T/2 resumed to T (startFrom latestTime) give a bit-identical
