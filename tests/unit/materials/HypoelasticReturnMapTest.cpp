@@ -91,7 +91,8 @@ std::vector<Index> allIds(int n) {
 // Input and composition
 
 TEST(HypoelasticDruckerPrager, CoefficientsAndDefaults) {
-    // [001 Eq. 35] and the reading notes' values.
+    // [001 Eq. 35], q_φ = 3 tan φ/√(9 + 12 tan² φ), at φ = 35° ([001 Table 3]), 22° ([001 §6])
+    // and 25°.
     EXPECT_NEAR(planeStrainFrictionCoefficient(35.0), 0.5445, 5e-5);
     EXPECT_NEAR(planeStrainFrictionCoefficient(22.0), 0.3661, 5e-5);
     EXPECT_NEAR(planeStrainFrictionCoefficient(25.0), 0.4106, 5e-5);

@@ -70,7 +70,7 @@ template <class P> const std::vector<int>& flagNamed(const P& p, const std::stri
 // Input
 
 TEST(ViscoelasticMuI, GlassViscositiesFromRestitution) {
-    // [002 Eq. 40, 42] for G1 with e = 0.1: ϑ = 175.05, η = 80.79 Pa·s (the numbers).
+    // [002 Eq. 40, 42] for G1 with e = 0.1: ϑ = 175.05, η = 80.79 Pa·s (docs/viscoelastic.md §1).
     const auto m = create<2>("restitution: 0.1\n");
     EXPECT_NEAR(as(m).bulkViscosity(), 175.05, 0.01);
     EXPECT_NEAR(as(m).shearViscosity(), 80.79, 0.01);
@@ -78,7 +78,7 @@ TEST(ViscoelasticMuI, GlassViscositiesFromRestitution) {
     EXPECT_NEAR(as(m).shearViscosity() / as(m).bulkViscosity(), c.G / c.K, 1e-15);
     EXPECT_DOUBLE_EQ(m->pWaveViscosity(),
                      as(m).bulkViscosity() + 4.0 / 3.0 * as(m).shearViscosity());
-    // Table of seed002-notes E2: e = 0.01 and 0.001.
+    // [002 Eq. 40] for G1 at e = 0.01 and 0.001 (docs/viscoelastic.md §6, inclined plane).
     EXPECT_NEAR(as(create<2>("restitution: 0.01\n")).bulkViscosity(), 520.0, 0.1);
     EXPECT_NEAR(as(create<2>("restitution: 0.001\n")).bulkViscosity(), 983.2, 0.1);
 }
@@ -293,8 +293,9 @@ TEST(ViscoelasticMuI, RigidRotationRotatesTheElasticStressExactly) {
 // Continuum restitution and the time-step limit
 
 TEST(ViscoelasticMuI, ContinuumRestitutionMatchesTheSphereTable) {
-    // ℰ(ϑ̃) of [002 Eq. 37] in real form, ζ = π ϑ̃/2 (seed002-notes §1.2 table, checked there
-    // against a direct ODE solution).
+    // ℰ(ϑ̃) of [002 Eq. 37] in real form, ζ = π ϑ̃/2 (derived in docs/viscoelastic.md §1); the
+    // values also follow from the damped mode with t_c found numerically
+    // (tutorials/viscoelastic/sphericalCompaction/parameters.py, velocityRatio()).
     const double table[][2] = {{0.0, 1.0},    {0.05, 0.7905}, {0.1, 0.6379}, {0.2, 0.4369},
                                {0.3, 0.3153}, {0.5, 0.1838},  {0.7, 0.1190}, {1.0, 0.0704},
                                {2.0, 0.0219}, {5.0, 0.0039}};
@@ -306,8 +307,9 @@ TEST(ViscoelasticMuI, ContinuumRestitutionMatchesTheSphereTable) {
 }
 
 TEST(ViscoelasticMuI, ViscousStepLimitOfTheCompactionSphere) {
-    // seed002-notes E1: λ = 1e11, G = 1e4 Pa, ρ = 1309, h = 0.1 m, a = 0.5 m: Δt_cr = 11.4, 7.1,
-    // 2.2, 1.1, 0.23 µs for ϑ̃ = 0, 0.1, 0.5, 1, 5 (ϑ = ϑ̃ a √(M ρ), η = 0) [002 Eq. 79].
+    // The ball of [002 §4.1] with λ = 1e11, G = 1e4 Pa (docs/viscoelastic.md §6), ρ = 1309,
+    // h = 0.1 m, a = 0.5 m, ϑ = ϑ̃ a √(M ρ), η = 0: ϑ̂ = ϑ̃ a/h = 5 ϑ̃ and h/c_p = 11.4 µs, so
+    // [002 Eq. 79–80] give Δt_cr = 11.4, 7.1, 2.2, 1.1, 0.23 µs for ϑ̃ = 0, 0.1, 0.5, 1, 5.
     const double G = 1e4, lambda = 1e11;
     const double nu = lambda / (2.0 * (lambda + G)),
                  E = G * (3.0 * lambda + 2.0 * G) / (lambda + G);

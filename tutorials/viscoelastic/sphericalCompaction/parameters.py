@@ -7,7 +7,8 @@ k a = j₀,₁ = 2.405 in 2D, both for λ/G → ∞). Separation of variables [0
 T̈ + ξ̃ Ṫ + ω₀² T = 0 with ξ̃ = k² ϑ/ρ, ω₀ = k c_p, c_p = √(M/ρ), and the damping ratio
 ζ = ξ̃/(2ω₀) = k ϑ/(2√(M ρ)) (sphere: ζ = π ϑ̃/2, ϑ̃ = ϑ/(a √(M ρ)) [002 Eq. 36]). The body
 separates when the total stress (∝ the acceleration) returns to zero, at t_c, and flies off at
-−ℰ v(0), ℰ = continuumRestitution(ζ) [002 Eq. 37] (real form, seed002-notes §1.2).
+−ℰ v(0), ℰ = continuumRestitution(ζ) [002 Eq. 37] (real form, derived in docs/viscoelastic.md
+§1; velocityRatio() below finds t_c and ℰ numerically without it).
 
     ./parameters.py theta DIM THETA_TILDE    prints ϑ [Pa s] for the run (Allrun)
     ./parameters.py table                    prints ℰ, t_c for the tutorial's ϑ̃
