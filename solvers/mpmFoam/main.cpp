@@ -6,6 +6,7 @@
 #include "core/Log.hpp"
 #include "parallel/Comm.hpp"
 #include "solver/Application.hpp"
+#include "solver/PostProcess.hpp"
 #include "solver/Simulation.hpp"
 
 #include <omp.h>
@@ -27,7 +28,11 @@ int main(int argc, char* argv[]) {
         {{"-dry-run", "check the case and take one step; write nothing"},
          {"-noFunctionObjects", "do not run controlDict's functions"},
          {"-list [family]", "list every model type (of one family) with its keys and exit"},
-         {"-parallel", "run decomposed (mpirun -np N mpmFoam -parallel)"}},
+         {"-parallel", "run decomposed (mpirun -np N mpmFoam -parallel)"},
+         {"-postProcess", "run controlDict's functions on the written times, without stepping"},
+         {"-func <name>", "-postProcess: only this function object"},
+         {"-time <list>", "-postProcess: these times (0.1, 0.1:0.3, 0.1,0.2, :0.2, 0.2:)"},
+         {"-latestTime", "-postProcess: the latest time only"}},
         "Signals: SIGUSR1 writes now and continues; SIGUSR2 or SIGTERM write and "
         "stop.\nA file named 'stop' in the case directory also writes and stops.");
     if (app.has("-list")) { // the model catalogue (core/KeySchema.hpp), without the banner
@@ -37,6 +42,8 @@ int main(int argc, char* argv[]) {
         });
         return comm.finish(rc);
     }
+    if (PostProcess::requested(app)) // the function objects on the written times, no stepping
+        return comm.finish(app.run([&] { PostProcess(app, comm).run(); }));
     const int rc = app.run([&] {
         const Case root(app.caseDir());
         const Case cs = comm.parallel() ? root.processor(comm.rank()) : root;

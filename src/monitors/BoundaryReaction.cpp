@@ -13,6 +13,9 @@ public:
         for (int f = 0; f < 2 * dim; ++f)
             faceNames_.push_back(Grid<dim>::faceName(f));
     }
+    std::string needsStep() const override {
+        return "needs the time step's grid update (the momentum the faces removed)";
+    }
 
 protected:
     std::vector<std::string> columns(const State<dim>&) const override {

@@ -15,6 +15,9 @@ namespace mpm {
 template <int dim> class ContactGap final : public FunctionObject<dim> {
 public:
     ContactGap(const Dictionary& dict, const std::string& name) : FunctionObject<dim>(dict, name) {}
+    std::string needsStep() const override {
+        return "needs the time step's contact search (the gaps and contacts of the step)";
+    }
 
 protected:
     void initialise(const State<dim>& s, const Time&) override {

@@ -16,12 +16,17 @@ FunctionObject<dim>::FunctionObject(const Dictionary& dict, std::string name)
                         : dict.getIntOr("writeInterval", 1, Bounds::closed(1, 2e9));
 }
 
+template <int dim>
+std::filesystem::path FunctionObject<dim>::file(const Case& cs, const Time& time) const {
+    return cs.path("postProcessing") / name_ / timeName(time.value(), 6) / (name_ + ".dat");
+}
+
 template <int dim> void FunctionObject<dim>::open(const Case& cs, const Time& time, bool write) {
     if (write) {
-        const auto dir = cs.path("postProcessing") / name_ / timeName(time.value(), 6);
-        std::filesystem::create_directories(dir);
-        out_.open(dir / (name_ + ".dat"));
-        if (!out_) throw RunError("cannot write " + (dir / (name_ + ".dat")).string());
+        const auto path = file(cs, time);
+        std::filesystem::create_directories(path.parent_path());
+        out_.open(path);
+        if (!out_) throw RunError("cannot write " + path.string());
     }
     precision_ = std::max(time.writePrecision(), 10);
     // The index execute() compares with (a restarted run resumes the same schedule).

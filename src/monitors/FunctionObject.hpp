@@ -7,6 +7,7 @@
 #include "core/Registry.hpp"
 #include "solver/State.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -25,6 +26,10 @@ public:
     virtual ~FunctionObject() = default;
 
     const std::string& name() const { return name_; }
+    /// Why this function object cannot be evaluated from a written time (mpmFoam -postProcess):
+    /// the data of the time step it reads ("needs the time step's contact search"); empty when
+    /// its values follow from the state a time directory holds.
+    virtual std::string needsStep() const { return {}; }
 
     /// Check the entries against the simulation (named bodies exist, …) and record initial
     /// values; called for every function object before any of them writes, and in -dry-run.
@@ -33,6 +38,8 @@ public:
     /// schedule. `write` false (ranks other than 0 of a parallel run): the schedule only; the
     /// values are computed on every rank (their reductions are collective), written by rank 0.
     void open(const Case& cs, const Time& time, bool write = true);
+    /// The file open() writes at `time`: `postProcessing/<name>/<time, 6 digits>/<name>.dat`.
+    std::filesystem::path file(const Case& cs, const Time& time) const;
     /// Sample every step (sample()) and write a row if the schedule says so.
     void execute(const State<dim>& s, const Time& time);
     /// Execute now (the initial state).

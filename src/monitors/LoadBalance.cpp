@@ -12,6 +12,9 @@ template <int dim> class LoadBalance final : public FunctionObject<dim> {
 public:
     LoadBalance(const Dictionary& dict, const std::string& name)
         : FunctionObject<dim>(dict, name) {}
+    std::string needsStep() const override {
+        return "needs the running ranks (their share of the points is not written)";
+    }
 
 protected:
     std::vector<std::string> columns(const State<dim>&) const override {

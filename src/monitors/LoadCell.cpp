@@ -22,6 +22,9 @@ public:
             if (faces[f] == face) face_ = f;
         window_ = dict.getScalarOr("window", 0.0, Bounds::nonNegative());
     }
+    std::string needsStep() const override {
+        return "needs every time step's grid update (the face's reaction and its average)";
+    }
 
 protected:
     void sample(const State<dim>& s, const Time& time) override {

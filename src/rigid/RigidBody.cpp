@@ -395,6 +395,10 @@ template <int dim> void RigidBody<dim>::writeState(std::ostream& os) const {
     }
     os << "omegaBody: " << fmtList(omegaBody_) << "\n";
     os << "alphaPrev: " << fmtList(alphaPrev_) << "\n";
+    // Not needed to continue (the next step gathers them anew): mpmFoam -postProcess reports
+    // them at a written time as the run did.
+    os << "force: " << fmtList(f_) << "\n";
+    os << "torque: " << fmtList(torque_) << "\n";
 }
 
 template <int dim> void RigidBody<dim>::readState(const Dictionary& dict) {
@@ -409,6 +413,8 @@ template <int dim> void RigidBody<dim>::readState(const Dictionary& dict) {
     }
     omegaBody_ = readVec3(dict, "omegaBody");
     alphaPrev_ = readVec3(dict, "alphaPrev");
+    f_ = dict.has("force") ? readVec<dim>(dict, "force") : Vec<dim>::Zero();
+    torque_ = dict.has("torque") ? readVec3(dict, "torque") : Vec3::Zero();
     dict.checkUnknownKeys();
     updateRotation();
 }

@@ -109,7 +109,8 @@ public:
 
     /// Full state for restart (`uniform/rigidBodies`), in full precision (%.17g), and read back
     /// bit-identically: YAML lines position, velocity, quaternion [w, x, y, z] (3D) or
-    /// angle [rad] (2D), omegaBody, alphaPrev.
+    /// angle [rad] (2D), omegaBody, alphaPrev, and the force and torque of the last step (what
+    /// rigidBodyState reports; optional on reading, zero when absent).
     void writeState(std::ostream& os) const;
     void readState(const Dictionary& dict);
 

@@ -151,23 +151,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         preload_ = seeder.preload();
         time.setStart(time.startFrom() == "startTime" ? time.startTime() : 0.0, 0, 0.0);
     } else {
-        io::readParticles(case_, from, particles_, materials_.size());
-        if (subdomain_) {
-            subdomain_->readTime(case_, from);
-            subdomain_->exchangePoints(particles_, -1, scratch_); // no rebalance at step -1
-        }
-        time.readTimeDict(from);
-        if (!bodies_.empty()) bodies_.read(case_, from);
-        gravity_ = acceleration_->at(time.value());
-        if (!acceleration_->isConstant())
-            accelerationWork_ = case_.read(from + "/uniform/accelerationWork").getScalar("work");
-        if (wallContactIsState()) {
-            const std::string file = from + "/uniform/wallContact";
-            if (case_.exists(file))
-                readWallContact(file);
-            else
-                log() << "No " << file << ": the walls start released, as in a fresh run\n";
-        }
+        readTime(time, from);
         log() << "Restart from time " << from << " (" << particles_.size() << " particles)\n";
     }
     buildMaterialLists();
@@ -199,6 +183,27 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         write();
         for (auto& f : functions_)
             f->executeNow(state(), time);
+    }
+}
+
+template <int dim> void MpmSimulation<dim>::readTime(Time& time, const std::string& from) {
+    time_ = &time;
+    io::readParticles(case_, from, particles_, materials_.size());
+    if (subdomain_) {
+        subdomain_->readTime(case_, from);
+        subdomain_->exchangePoints(particles_, -1, scratch_); // no rebalance at step -1
+    }
+    time.readTimeDict(from);
+    if (!bodies_.empty()) bodies_.read(case_, from);
+    gravity_ = acceleration_->at(time.value());
+    if (!acceleration_->isConstant())
+        accelerationWork_ = case_.read(from + "/uniform/accelerationWork").getScalar("work");
+    if (wallContactIsState()) {
+        const std::string file = from + "/uniform/wallContact";
+        if (case_.exists(file))
+            readWallContact(file);
+        else
+            log() << "No " << file << ": the walls start released, as in a fresh run\n";
     }
 }
 

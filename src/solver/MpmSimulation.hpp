@@ -53,6 +53,27 @@ public:
     const Particles<dim>& particles() const { return particles_; }
     const Grid<dim>& grid() const { return grid_; }
 
+    /// Read time directory `from` as a restart does (its particles, uniform/time into `time`,
+    /// the bodies' state, the body acceleration's work, the walls' contact) and make `time`
+    /// the simulation's clock; start() calls it to restart, mpmFoam -postProcess for each time.
+    void readTime(Time& time, const std::string& from);
+    /// What function objects read (collective in a parallel run: its minima and sums).
+    State<dim> state() const {
+        return {particles_,
+                grid_,
+                materials_,
+                gravity_,
+                reactions_,
+                bodies_.bodies(),
+                comm_.min(coupling_ ? coupling_->minimumGapSeen() : 1e300),
+                comm_.sum(coupling_ ? coupling_->numContacts() : Index(0)),
+                time_->value(),
+                *acceleration_,
+                accelerationWork_,
+                comm_.min(coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300),
+                comm_};
+    }
+
 private:
     static constexpr long ReorderInterval = 20;
 
@@ -121,21 +142,6 @@ private:
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
-    State<dim> state() const {
-        return {particles_,
-                grid_,
-                materials_,
-                gravity_,
-                reactions_,
-                bodies_.bodies(),
-                comm_.min(coupling_ ? coupling_->minimumGapSeen() : 1e300),
-                comm_.sum(coupling_ ? coupling_->numContacts() : Index(0)),
-                time_->value(),
-                *acceleration_,
-                accelerationWork_,
-                comm_.min(coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300),
-                comm_};
-    }
 
     const Case& case_;
     Case global_; ///< the root case (case_ itself in a serial run): postProcessing, .pvtu
