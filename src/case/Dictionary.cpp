@@ -324,13 +324,47 @@ void Dictionary::error(const std::string& key, const std::string& message) const
 
 namespace {
 
-/// Shared lookup of a required entry: marks it read, errors if absent.
+std::string lowerCase(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+/// Shared lookup of a required entry: marks it read, errors if absent. A missing key is most
+/// often a misspelt one: when the map holds a key not (yet) looked up and not in the model's
+/// schema that is close to it (equal but for case, or at most 2 edits away on a key long enough
+/// that 2 edits leave most of it), the error is located at that key and names both, e.g.
+/// `constant/materials:9: key 'sand.frictionAngel': unknown key; did you mean
+/// 'frictionAngle'? (required, missing)`, rather than at the map's first line. This is the one
+/// place every required lookup goes through; unknown keys in general are reported by
+/// checkUnknownKeys once the model has read what it reads.
 YAML::Node required(const Dictionary& dict, const YAML::Node& map, std::set<std::string>& read,
-                    const std::string& key) {
+                    const Dictionary::KeyHelp& help, const std::string& key) {
     read.insert(key);
     YAML::Node v = findEntry(map, key).second;
-    if (!v.IsDefined()) dict.error(key, "missing required key");
-    return v;
+    if (v.IsDefined()) return v;
+    const std::string lower = lowerCase(key);
+    std::string typo;
+    int typoLine = 0;
+    int best = std::numeric_limits<int>::max();
+    for (auto it = map.begin(); it != map.end(); ++it) {
+        const std::string k = it->first.Scalar();
+        if (read.count(k) || std::find(help.keys.begin(), help.keys.end(), k) != help.keys.end())
+            continue; // a valid key of the model, not a misspelling
+        const int d = lowerCase(k) == lower ? 0 : editDistance(k, key);
+        const bool close = d == 0 || (d <= 2 && static_cast<int>(key.size()) > 2 * d);
+        if (close && d < best) {
+            best = d;
+            typo = k;
+            typoLine = lineOf(it->first.Mark());
+        }
+    }
+    if (!typo.empty()) {
+        const std::string& path = dict.path();
+        throw InputError(dict.fileName(), typoLine, path.empty() ? typo : path + "." + typo,
+                         "unknown key; did you mean '" + key + "'? (required, missing)");
+    }
+    dict.error(key, "missing required key");
 }
 
 double toNumber(const Dictionary& dict, const std::string& key, const YAML::Node& v,
@@ -345,7 +379,7 @@ double toNumber(const Dictionary& dict, const std::string& key, const YAML::Node
 } // namespace
 
 double Dictionary::getScalar(const std::string& key, Bounds bounds) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     const double value = toNumber(*this, key, v);
     if (!inBounds(value, bounds)) {
         error(key, "expected a number in " + formatBounds(bounds) + ", got " + v.Scalar());
@@ -354,7 +388,7 @@ double Dictionary::getScalar(const std::string& key, Bounds bounds) const {
 }
 
 int Dictionary::getInt(const std::string& key, Bounds bounds) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     double value = 0.0;
     if (!v.IsScalar() || !parseNumber(v.Scalar(), value)) {
         error(key, "expected an integer, got " + describe(v));
@@ -371,7 +405,7 @@ int Dictionary::getInt(const std::string& key, Bounds bounds) const {
 }
 
 bool Dictionary::getBool(const std::string& key) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (v.IsScalar()) {
         std::string s = v.Scalar();
         std::transform(s.begin(), s.end(), s.begin(),
@@ -383,13 +417,13 @@ bool Dictionary::getBool(const std::string& key) const {
 }
 
 std::string Dictionary::getString(const std::string& key) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (!v.IsScalar()) error(key, "expected a string, got " + describe(v));
     return v.Scalar();
 }
 
 std::vector<double> Dictionary::getVector(const std::string& key, int size) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     const std::string expected = size >= 0
                                      ? "expected a sequence of " + std::to_string(size) + " numbers"
                                      : std::string("expected a sequence of numbers");
@@ -406,7 +440,7 @@ std::vector<double> Dictionary::getVector(const std::string& key, int size) cons
 }
 
 std::vector<std::string> Dictionary::getStringList(const std::string& key) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (!v.IsSequence()) error(key, "expected a sequence of strings, got " + describe(v));
     const std::string base = path_.empty() ? key : path_ + "." + key;
     std::vector<std::string> out;
@@ -423,7 +457,7 @@ std::vector<std::string> Dictionary::getStringList(const std::string& key) const
 
 std::string Dictionary::getWord(const std::string& key,
                                 const std::vector<std::string>& choices) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (v.IsScalar() && std::find(choices.begin(), choices.end(), v.Scalar()) != choices.end()) {
         return v.Scalar();
     }
@@ -460,7 +494,7 @@ std::string Dictionary::getWordOr(const std::string& key, const std::string& def
 }
 
 Dictionary Dictionary::subDict(const std::string& key) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (!v.IsMap()) error(key, "expected a map of 'key: value' entries, got " + describe(v));
     Dictionary d(v, file_, path_.empty() ? key : path_ + "." + key);
     d.base_ = base_;
@@ -478,7 +512,7 @@ bool Dictionary::isDict(const std::string& key) const {
 }
 
 std::vector<Dictionary> Dictionary::dictList(const std::string& key) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (!v.IsSequence()) error(key, "expected a sequence of maps, got " + describe(v));
     const std::string base = path_.empty() ? key : path_ + "." + key;
     std::vector<Dictionary> out;
@@ -496,7 +530,7 @@ std::vector<Dictionary> Dictionary::dictList(const std::string& key) const {
 }
 
 std::vector<std::vector<double>> Dictionary::vectorList(const std::string& key, int size) const {
-    const YAML::Node v = required(*this, node_, *read_, key);
+    const YAML::Node v = required(*this, node_, *read_, *help_, key);
     if (!v.IsSequence()) error(key, "expected a sequence of sequences, got " + describe(v));
     const std::string base = path_.empty() ? key : path_ + "." + key;
     const std::string expected = size >= 0

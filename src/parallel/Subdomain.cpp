@@ -19,8 +19,8 @@ Subdomain<dim>::Subdomain(const Case& cs, const Grid<dim>& grid, const Comm& com
         throw InputError(cs.root().string() + "/constant/decomposition", 0, "numberOfSubdomains",
                          "the case is decomposed into " + std::to_string(decomposition_.size()) +
                              " subdomains but the run has " + std::to_string(comm_.size()) +
-                             " ranks: run mpirun -np " + std::to_string(decomposition_.size()) +
-                             ", or decomposePar again");
+                             (comm_.size() == 1 ? " rank" : " ranks") + ": run mpirun -np " +
+                             std::to_string(decomposition_.size()) + ", or decomposePar again");
     halo_ = std::make_unique<GridHalo<dim>>(comm_, decomposition_);
     findNeighbours();
 }

@@ -5,6 +5,7 @@
 #include "core/Parallel.hpp"
 #include "io/ParticleIO.hpp"
 #include "io/PvtuFile.hpp"
+#include "io/SeedingRecord.hpp"
 #include "solver/GravityPreload.hpp"
 #include "solver/StateMeasures.hpp"
 
@@ -138,7 +139,19 @@ void MpmSimulation<dim>::failIfAny(bool bad, const std::string& phase, Index par
 template <int dim> void MpmSimulation<dim>::start(Time& time) {
     time_ = &time;
     // Parallel: the latest time every processor holds complete, agreed by all ranks.
-    const std::string from = io::restartDirectory(case_, time, comm_);
+    std::string from = io::restartDirectory(case_, time, comm_);
+    // A time directory the seeding wrote (its uniform/seeding record) whose inputs changed since
+    // (a new cellSize, particle set or material): seed again, as a fresh start would.
+    if (!from.empty()) {
+        const std::string change = io::seedingChange(case_, from);
+        if (comm_.any(!change.empty())) {
+            log() << "Not restarting from time " << from << ": "
+                  << (change.empty() ? "its inputs have changed" : change)
+                  << " since it was seeded (" << case_.displayName(from + "/uniform/seeding")
+                  << "); seeding again\n";
+            from.clear();
+        }
+    }
     const bool fresh = from.empty();
     if (fresh) {
         gravity_ = acceleration_->at(time.startFrom() == "startTime" ? time.startTime() : 0.0);
@@ -149,6 +162,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
         bc_.wrap(particles_);
         if (subdomain_) subdomain_->keepOwned(particles_);
         preload_ = seeder.preload();
+        seedingRecord_ = io::seedingRecord(io::seedingInputs(case_, preload_.requested));
         time.setStart(time.startFrom() == "startTime" ? time.startTime() : 0.0, 0, 0.0);
     } else {
         readTime(time, from);
@@ -589,6 +603,10 @@ template <int dim> void MpmSimulation<dim>::write() {
                 io::writeScalarFile(dir / "uniform" / "accelerationWork", "work",
                                     accelerationWork_);
             if (!bodies_.empty()) bodies_.write(dir);
+            if (!seedingRecord_.empty()) {
+                std::filesystem::create_directories(dir / "uniform");
+                io::writeTextAtomic(dir / "uniform" / "seeding", seedingRecord_);
+            }
             if (wallContactIsState()) {
                 // Files number the nodes x fastest (Grid::fileIndex), whatever the storage.
                 std::vector<std::pair<Index, int>> contact = bc_.wallContact();
@@ -599,6 +617,7 @@ template <int dim> void MpmSimulation<dim>::write() {
             }
         },
         files);
+    seedingRecord_.clear(); // the seeded time only
     if (!comm_.parallel()) return;
     // A parallel run: rank r wrote processor<r>/<time>/ (its points and the restart state);
     // rank 0 writes <time>/particles.pvtu, which ParaView opens as one data set of all pieces,

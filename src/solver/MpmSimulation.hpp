@@ -174,6 +174,9 @@ private:
     std::vector<NodeArray<double>> reach_; ///< per constraint: Σ_p w_ip over its points
     std::vector<double> inMaterial_;       ///< scratch: 1 for the constraint's points
     PreloadSettings preload_;
+    /// A fresh start's record of its inputs (io/SeedingRecord.hpp), written by the first write
+    /// into <time>/uniform/seeding; empty once written, and on a restart.
+    std::string seedingRecord_;
     bool preloading_ = false;
     long preloadIndex_ = 0;
     double lastKinetic_ = 0;

@@ -8,14 +8,15 @@
 #     line 2  the key the message must name (e.g. nu), as a whole word; for an error that has
 #             no key (YAML syntax, missing file), a phrase of the message instead
 #     line 3  optional: `noLine` for errors that cannot carry a line number (missing or empty
-#             file, unreadable time directory)
+#             file, unreadable time directory), or `line N`: the message must be located at
+#             line N (e.g. a misspelt key's own line, not its map's first line)
 # An optional file `args` holds extra command-line options (e.g. -dry-run).
 #
 # For each case the suite copies it to a temporary folder, runs `mpmFoam -case` under
 # `timeout 60` and asserts:
 #   - exit code exactly 1 (not 0, not a signal >= 128, not 124 = timeout);
 #   - stderr has `--> MPMFOAM FATAL IO ERROR:` and names the file and the key;
-#   - the message is located `file:LINE: ` (unless noLine);
+#   - the message is located `file:LINE: ` (unless noLine), at `file:N: ` with `line N`;
 #   - nothing was written into the case (no time directory, particles.pvd, postProcessing).
 # Then a few command-line checks: unknown option -> 1, -help -> 0, -list -> 0 (its families),
 # -list of an unknown family -> 1, missing case folder -> 1.
@@ -87,7 +88,10 @@ for name in $names; do
     expFile=$(sed -n 1p "$src/expect")
     expKey=$(sed -n 2p "$src/expect")
     noLine=0
-    [ "$(sed -n 3p "$src/expect" | tr -d '[:space:]')" = noLine ] && noLine=1
+    expLine='[0-9]+'
+    read -r third lineNo <<<"$(sed -n 3p "$src/expect")"
+    [ "${third:-}" = noLine ] && noLine=1
+    [ "${third:-}" = line ] && expLine=${lineNo:-}
     args=()
     if [ -f "$src/args" ]; then read -r -a args <"$src/args"; fi
 
@@ -112,8 +116,12 @@ for name in $names; do
     grep -q -- '--> MPMFOAM FATAL IO ERROR' "$err" || problems+=("no 'FATAL IO ERROR' on stderr")
     grep -qF -- "$expFile" "$err" || problems+=("stderr does not name $expFile")
     grep -qwF -- "$expKey" "$err" || problems+=("stderr does not name '$expKey'")
-    if [ "$noLine" -eq 0 ] && ! grep -qE -- "^$(escapeRe "$expFile"):[0-9]+: " "$err"; then
-        problems+=("no '$expFile:LINE:' location")
+    if [ "$noLine" -eq 0 ] && ! grep -qE -- "^$(escapeRe "$expFile"):$expLine: " "$err"; then
+        if [ "$expLine" = '[0-9]+' ]; then
+            problems+=("no '$expFile:LINE:' location")
+        else
+            problems+=("not located at '$expFile:$expLine:'")
+        fi
     fi
     if [ "$before" != "$after" ]; then
         new=$(comm -13 <(echo "$before") <(echo "$after") | awk '{print $2}' | head -5 | tr '\n' ' ')

@@ -229,7 +229,7 @@ c=$work/np3
 if mpi 2 "$bin/mpmFoam" -case "$c" -parallel > "$work/e1" 2>&1; then fail "-np 2 on 3 subdomains ran"; fi
 expect "decomposed into 3 subdomains but the run has 2 ranks" "$work/e1"
 if timeout 120 "$bin/mpmFoam" -case "$c" -parallel > "$work/e2" 2>&1; then fail "singleton ran"; fi
-expect "decomposed into 3 subdomains but the run has 1 ranks" "$work/e2"
+expect "decomposed into 3 subdomains but the run has 1 rank: run mpirun -np 3" "$work/e2"
 rm -rf "$c/processor2"
 if mpi 3 "$bin/mpmFoam" -case "$c" -parallel > "$work/e3" 2>&1; then fail "missing processor2 ran"; fi
 expect "no such processor directory" "$work/e3"

@@ -2,7 +2,9 @@
 # surfaceToLevelSet end to end: a 0.1 m cube written as an ascii STL becomes
 # constant/levelSets/cube.vti; VTK's reader loads it, phi equals the exact signed distance
 # inside and outside, and the field data carries the cube's volume. A misspelt key is an
-# error with file, line and key, exit code 1.
+# error with file, line and key, exit code 1. The case needs system/surfaceToLevelSetDict (not
+# yet a controlDict, as in the user guide's boulder): a missing folder or dictionary is an
+# error naming it.
 set -euo pipefail
 root=${MPMFOAM_DIR:-$(cd "$(dirname "$0")/../.." && pwd)}
 py=${MPMFOAM_PYTHON:-/usr/bin/python3}
@@ -34,6 +36,18 @@ print(f"surfaceToLevelSet: {n} points, phi(centre) {phi[centre]:.6f} (exact {ins
       f"{phi[corner]:.6f} (exact {exact:.6f}), volume {vol:.3e}: {'PASS' if ok else 'FAIL'}")
 sys.exit(0 if ok else 1)
 PY
+# Refused with the missing thing named: no such folder; a folder without the dictionary.
+rc=0
+"$root/bin/surfaceToLevelSet" -case "$work/nowhere" >"$work/log" 2>"$work/err" || rc=$?
+[ "$rc" -eq 1 ] && grep -q "nowhere: the case directory does not exist" "$work/err" ||
+    { echo "FAIL: a missing case folder not reported (exit $rc)"; cat "$work/err"; exit 1; }
+rc=0
+"$root/bin/surfaceToLevelSet" -case "$c/constant" >"$work/log" 2>"$work/err" || rc=$?
+[ "$rc" -eq 1 ] && grep -q "constant: no system/surfaceToLevelSetDict" "$work/err" &&
+    [ ! -e "$c/constant/constant" ] ||
+    { echo "FAIL: a folder without system/surfaceToLevelSetDict not reported (exit $rc)"; cat "$work/err"; exit 1; }
+echo "surfaceToLevelSet: a missing folder or system/surfaceToLevelSetDict is named"
+
 sed -i 's/spacing:/spacng:/' "$c/system/surfaceToLevelSetDict"
 rc=0
 "$root/bin/surfaceToLevelSet" -case "$c" >"$work/log" 2>"$work/err" || rc=$?

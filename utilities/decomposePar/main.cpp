@@ -10,6 +10,7 @@
 #include "forces/BodyAcceleration.hpp"
 #include "grid/Grid.hpp"
 #include "io/ParticleFile.hpp"
+#include "io/SeedingRecord.hpp"
 #include "io/TimeDirectory.hpp"
 #include "materials/Material.hpp"
 #include "parallel/Decomposition.hpp"
@@ -129,7 +130,14 @@ template <int dim> void decompose(const Case& cs, const Dictionary& gridDict, bo
     }
 
     // The points at the start time.
-    const std::string from = io::restartDirectory(cs, time);
+    std::string from = io::restartDirectory(cs, time);
+    // A seeded time whose inputs changed since: the run will seed again, so decompose that.
+    if (const std::string change = from.empty() ? "" : io::seedingChange(cs, from);
+        !change.empty()) {
+        log() << "Not decomposing time " << from << ": " << change << " since it was seeded ("
+              << from << "/uniform/seeding); seeding again\n";
+        from.clear();
+    }
     const std::string source = from.empty() ? "constant/particles" : from + "/particles.vtu";
     io::PointCloud cloud;
     std::vector<Vec<dim>> x;

@@ -3,8 +3,9 @@
 // constant/ (level sets and meshes included), the 0/ time directory (or, with -latestTime, the
 // latest one instead), *.orig folders and the files at the case's top level (Allrun, Allclean,
 // makeX.py, README.md, ...). Results are not copied: other time directories, processor*/,
-// postProcessing/, *.pvd, log.*, the stop file. The copy is made in a hidden folder beside
-// <to> and renamed into place, so <to> is either complete or absent.
+// postProcessing/, *.pvd, log.*, the stop file, nor files that tools generate for the case
+// they were run in (mpmParaView.py, which names the original case's files). The copy is made
+// in a hidden folder beside <to> and renamed into place, so <to> is either complete or absent.
 #include "case/Case.hpp"
 #include "case/CaseDirectory.hpp"
 #include "core/Error.hpp"
@@ -33,8 +34,9 @@ Usage: mpmCloneCase [OPTIONS] <from> <to>
 Copy the case <from> into the new case <to> (OpenFOAM's foamCloneCase): system/,
 constant/, the 0/ time directory, *.orig folders and the files at the top level
 of <from> (Allrun, Allclean, scripts, README). Not copied: other time
-directories, processor*/, postProcessing/, *.pvd, log.*, the stop file, and other
-folders (listed). <to> must not exist.
+directories, processor*/, postProcessing/, *.pvd, log.*, the stop file, the
+generated mpmParaView.py (it names <from>'s files; run mpmParaView in <to>), and
+other folders (listed). <to> must not exist.
 
 options:
   -help                 print this usage and exit
@@ -52,10 +54,12 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 }
 
 /// A top-level file that a run writes: log.*, *.pvd (and *.series), the stop file, the
-/// temporaries of an atomic write (*.tmp).
+/// temporaries of an atomic write (*.tmp); or that a tool generates for this very case:
+/// mpmParaView.py (bin/mpmParaView's script, which opens the original case's files by their
+/// absolute paths).
 bool isResultFile(const std::string& name) {
     return startsWith(name, "log.") || endsWith(name, ".pvd") || endsWith(name, ".series") ||
-           endsWith(name, ".tmp") || name == "stop";
+           endsWith(name, ".tmp") || name == "stop" || name == "mpmParaView.py";
 }
 
 /// A top-level folder that a run or decomposePar writes.

@@ -2,6 +2,7 @@
 // surfaceToLevelSet: signed-distance grids (constant/levelSets/<name>.vti) of the surfaces named
 // in system/surfaceToLevelSetDict, in each body's principal frame, with its mass properties.
 #include "case/Case.hpp"
+#include "case/CaseDirectory.hpp"
 #include "core/Log.hpp"
 #include "levelset/LevelSetFile.hpp"
 #include "levelset/MassProperties.hpp"
@@ -157,6 +158,12 @@ int main(int argc, char* argv[]) {
                           "surfaces, from system/surfaceToLevelSetDict.",
                           {});
     return app.run([&] {
+        // The dictionary is what it needs; not system/controlDict, which a new case may not
+        // have yet when its level sets are made (docs/userGuide.md §4).
+        requireCaseDirectory(app.caseDir(), "the case directory does not exist",
+                             "system/surfaceToLevelSetDict",
+                             "no system/surfaceToLevelSetDict: it names the surfaces to convert "
+                             "(docs/levelSets.md)");
         const Case cs(app.caseDir());
         const Dictionary dict = cs.read("system/surfaceToLevelSetDict");
         const Dictionary surfaces = dict.subDict("surfaces");

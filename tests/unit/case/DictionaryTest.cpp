@@ -236,6 +236,32 @@ TEST(Dictionary, MissingRequiredKey) {
     expectError([&] { d.dictList("regions"); }, 1, "regions", "missing required key");
 }
 
+TEST(Dictionary, MissingRequiredKeyNamesTheMisspeltOne) {
+    // The typo's own line and name, not the map's first line.
+    const Dictionary m = parse("sand:\n  type: druckerPrager\n  density: 1500\n"
+                               "  frictionAngel: 30\n");
+    const Dictionary sand = m.subDict("sand");
+    sand.getString("type");
+    sand.getScalar("density");
+    expectError([&] { sand.getScalar("frictionAngle"); }, 4, "sand.frictionAngel",
+                "unknown key; did you mean 'frictionAngle'? (required, missing)");
+    // Case only (endtime for endTime), at the top level.
+    const Dictionary c = parse("deltaT: 1e-4\nendtime: 0.5\n");
+    expectError([&] { c.getScalar("endTime"); }, 2, "endtime", "did you mean 'endTime'?");
+    // Not a typo: too far (3 edits), too short for 2 edits, or a key already read.
+    const Dictionary far = parse("a: 1\nendTyme2x: 2\n");
+    expectError([&] { far.getScalar("endTime"); }, 1, "endTime", "missing required key");
+    const Dictionary shortKeys = parse("a: 1\nnu: 2\n");
+    expectError([&] { shortKeys.getScalar("E"); }, 1, "E", "missing required key");
+    const Dictionary read = parse("a: 1\nstartTime: 0\n");
+    read.getScalar("startTime");
+    expectError([&] { read.getScalar("startTim"); }, 1, "startTim", "missing required key");
+    // A key of the model's schema is valid, even before it is read.
+    const Dictionary schema = parse("a: 1\nmin: 0\n");
+    schema.setKeyHelp({"box", {"min", "max"}, "mpmFoam -list regions"});
+    expectError([&] { schema.getVector("mix"); }, 1, "mix", "missing required key");
+}
+
 TEST(Dictionary, WrongTypes) {
     const Dictionary d = parse("a: abc\n"
                                "b: [1, 2]\n"
