@@ -10,6 +10,7 @@
 #include "solver/StateMeasures.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <iomanip>
@@ -131,8 +132,14 @@ template <int dim> void MpmSimulation<dim>::exchangePoints() {
 template <int dim>
 void MpmSimulation<dim>::failIfAny(bool bad, const std::string& phase, Index particle,
                                    const std::string& what) {
-    if (!comm_.any(bad)) return;
-    if (bad) fail(phase, particle, what);
+    failIf(comm_.any(bad), bad, phase, particle, what);
+}
+
+template <int dim>
+void MpmSimulation<dim>::failIf(bool anyRank, bool here, const std::string& phase, Index particle,
+                                const std::string& what) {
+    if (!anyRank) return;
+    if (here) fail(phase, particle, what);
     fail(phase, -1, "stopped: another rank failed (its message names the particle)");
 }
 
@@ -490,11 +497,24 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     const GatherStats st =
         transfer_->gather(particles_, grid_, dt, order_->gradientInGridToParticle());
     if (coupling_) coupling_->applyLocalForces(particles_, dt);
-    failIfAny(st.firstNonFinite >= 0, "G2P", st.firstNonFinite,
-              "has a velocity that is not finite");
-    lastKinetic_ = comm_.sum(st.kineticEnergy);
-    maxSpeed_ = comm_.max(st.maxSpeed);
-    maxMoveSpeed_ = comm_.max(st.maxMoveSpeed);
+    // The step's G2P figures of every rank in one exchange, not four: under load each exchange
+    // waits for the other ranks' next time slice (docs/parallel.md, "Ranks under load"). The
+    // sum runs in rank order, as Comm::sum's: the same bits.
+    const bool notFinite = st.firstNonFinite >= 0;
+    const std::array<double, 4> mine{notFinite ? 1.0 : 0.0, st.kineticEnergy, st.maxSpeed,
+                                     st.maxMoveSpeed};
+    double anyNotFinite = 0.0;
+    lastKinetic_ = 0.0;
+    maxSpeed_ = 0.0;
+    maxMoveSpeed_ = 0.0;
+    for (const std::array<double, 4>& rank : comm_.gather(mine)) {
+        anyNotFinite = std::max(anyNotFinite, rank[0]);
+        lastKinetic_ += rank[1];
+        maxSpeed_ = std::max(maxSpeed_, rank[2]);
+        maxMoveSpeed_ = std::max(maxMoveSpeed_, rank[3]);
+    }
+    failIf(anyNotFinite > 0.0, notFinite, "G2P", st.firstNonFinite,
+           "has a velocity that is not finite");
     if (maxSpeed_ * dt > grid_.h()) {
         std::ostringstream os;
         os << "moved more than one cell in one step (|v| = " << maxSpeed_ << " m/s, dt = " << dt

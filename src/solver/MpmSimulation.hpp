@@ -138,6 +138,10 @@ private:
     }
     /// Collective failure check: stops every rank when `bad` holds on any (fail on each).
     void failIfAny(bool bad, const std::string& phase, Index particle, const std::string& what);
+    /// The same when every rank already knows `anyRank` (from an exchange it shared with other
+    /// figures); `here`: this rank's own `bad`.
+    void failIf(bool anyRank, bool here, const std::string& phase, Index particle,
+                const std::string& what);
 
     // Failure handling: keep a recent good state and write it before stopping.
     void snapshot() { good_.save(particles_, bodies_, *time_); }
