@@ -489,7 +489,7 @@ template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
     applyVelocityConstraints(grid_.v, time_->value());
     copyToGhosts(grid_.vOld, grid_.v);
-    if (subdomain_) comm_.sum(reactions_[0].data(), static_cast<int>(2 * dim * dim)); // all ranks
+    // Parallel: each rank holds its own nodes' share of the reactions; G2P's exchange sums them.
 }
 
 template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
@@ -497,22 +497,30 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     const GatherStats st =
         transfer_->gather(particles_, grid_, dt, order_->gradientInGridToParticle());
     if (coupling_) coupling_->applyLocalForces(particles_, dt);
-    // The step's G2P figures of every rank in one exchange, not four: under load each exchange
-    // waits for the other ranks' next time slice (docs/parallel.md, "Ranks under load"). The
-    // sum runs in rank order, as Comm::sum's: the same bits.
+    // The step's figures of every rank in one exchange, not five: the not-finite check, E_k, the
+    // fastest and the fastest-moving speed, and the grid update's reactions (each rank's nodes'
+    // share). Under load each exchange waits for the other ranks' next time slice
+    // (docs/parallel.md, "Ranks under load"). Sums run in rank order, as Comm::sum's: the same
+    // bits; a serial run keeps its reactions as they are.
+    constexpr int NumReactions = 2 * dim * dim;
     const bool notFinite = st.firstNonFinite >= 0;
-    const std::array<double, 4> mine{notFinite ? 1.0 : 0.0, st.kineticEnergy, st.maxSpeed,
-                                     st.maxMoveSpeed};
+    std::array<double, 4 + NumReactions> mine{notFinite ? 1.0 : 0.0, st.kineticEnergy, st.maxSpeed,
+                                              st.maxMoveSpeed};
+    std::copy_n(reactions_[0].data(), NumReactions, mine.begin() + 4);
     double anyNotFinite = 0.0;
     lastKinetic_ = 0.0;
     maxSpeed_ = 0.0;
     maxMoveSpeed_ = 0.0;
-    for (const std::array<double, 4>& rank : comm_.gather(mine)) {
+    std::array<double, NumReactions> reactions{};
+    for (const auto& rank : comm_.gather(mine)) {
         anyNotFinite = std::max(anyNotFinite, rank[0]);
         lastKinetic_ += rank[1];
         maxSpeed_ = std::max(maxSpeed_, rank[2]);
         maxMoveSpeed_ = std::max(maxMoveSpeed_, rank[3]);
+        for (int k = 0; k < NumReactions; ++k)
+            reactions[k] += rank[4 + k];
     }
+    if (subdomain_) std::copy_n(reactions.begin(), NumReactions, reactions_[0].data());
     failIf(anyNotFinite > 0.0, notFinite, "G2P", st.firstNonFinite,
            "has a velocity that is not finite");
     if (maxSpeed_ * dt > grid_.h()) {
@@ -540,15 +548,18 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
     if (fBar_) fBar_->apply(particles_, grid_, *transfer_, sort_, dt);
     const Index inverted = particles_.updateDeformation(dt, volumeFromRate_);
     const bool isInverted = inverted < static_cast<Index>(particles_.size());
-    failIfAny(isInverted, "constitutive", inverted,
-              isInverted && volumeFromRate_[particles_.material[inverted]]
-                  ? "has a volume that is not finite (velocity gradient not finite)"
-                  : "has det F <= 0 (inverted element)");
     if (phaseDensity_) phaseDensity_->apply(particles_, grid_, *transfer_, sort_);
-    for (std::size_t m = 0; m < materials_.size(); ++m) {
-        const Index bad = materials_[m]->updateStress(particles_, materialParticles_[m], dt);
-        failIfAny(bad >= 0, "constitutive", bad, "has a stress that is not finite");
-    }
+    // A rank with an inverted point updates no stress; one exchange then stops every rank if
+    // any had an inverted point or a stress that is not finite (the first material's first).
+    Index bad = -1;
+    for (std::size_t m = 0; m < materials_.size() && !isInverted && bad < 0; ++m)
+        bad = materials_[m]->updateStress(particles_, materialParticles_[m], dt);
+    const bool here = isInverted || bad >= 0;
+    failIf(comm_.any(here), here, "constitutive", isInverted ? inverted : bad,
+           !isInverted ? "has a stress that is not finite"
+           : volumeFromRate_[particles_.material[inverted]]
+               ? "has a volume that is not finite (velocity gradient not finite)"
+               : "has det F <= 0 (inverted element)");
 }
 
 template <int dim> void MpmSimulation<dim>::advanceBodies(double dt) {
