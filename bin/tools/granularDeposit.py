@@ -48,6 +48,20 @@ def height(d, h, dim):
     return d["x"][:, dim - 1].max() + h / 4
 
 
+def occupied(d, h, dim):
+    """The space under the deposit's surface over the points' own volume Σ V_p: the surface is
+    the highest point of each column of cells (+ h/4), the floor z = 0. Below 1 where the points
+    bunched up without their volumes following (they claim more space than they fill); a real
+    deposit is slightly looser than the column, not denser (Balmforth & Kerswell 2005: its area
+    grows by about 10 %)."""
+    x = d["x"]
+    cells = np.floor(x[:, : dim - 1] / h).astype(int)
+    _, col = np.unique(cells, axis=0, return_inverse=True)
+    top = np.full(col.max() + 1, -np.inf)
+    np.maximum.at(top, col.ravel(), x[:, dim - 1])
+    return (top + h / 4).sum() * h ** (dim - 1) / d["volume"].sum()
+
+
 def deposit(d, h, dim):
     """(share of the points more than two cells below the free surface that carry no stress,
     Σσ_v / Σ ρ g depth over those points, their number). The free surface is the highest point

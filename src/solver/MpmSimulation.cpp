@@ -73,6 +73,16 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
             phaseDensity_->setNodalFold(
                 [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
     }
+    if (schemes.isDict("splitting")) {
+        const Dictionary sd = schemes.subDict("splitting");
+        splitting_ = std::make_unique<ParticleSplitting<dim>>(
+            sd.getScalar("maxStretch",
+                         Bounds{1.0, std::numeric_limits<double>::infinity(), false, true}),
+            particles_);
+        sd.checkUnknownKeys();
+    } else if (schemes.has("splitting")) {
+        schemes.error("splitting", "expected a map, e.g. splitting: {maxStretch: 2}");
+    }
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
@@ -181,8 +191,7 @@ template <int dim> void MpmSimulation<dim>::start(Time& time) {
     if (fresh && preload_.requested) gravityPreload();
 
     maxSpeed_ = comm_.max(maxSpeed(particles_, bodies_));
-    const auto& m = particles_.mass; // restarting from an empty file is allowed
-    lightestMass_ = comm_.min(m.empty() ? 1e300 : *std::min_element(m.begin(), m.end()));
+    lightestMass_ = lightestMass();
     const std::string limit = stepLimit();
     log() << "Stable deltaT: " << criticalDeltaT() << " s, limit " << limit << "\n";
     time.checkFixedDeltaT(criticalDeltaT(), limit);
@@ -228,20 +237,40 @@ template <int dim> void MpmSimulation<dim>::readTime(Time& time, const std::stri
     }
 }
 
+template <int dim> double MpmSimulation<dim>::lightestMass() const {
+    const auto& m = particles_.mass; // restarting from an empty file is allowed
+    return comm_.min(m.empty() ? 1e300 : *std::min_element(m.begin(), m.end()));
+}
+
+template <int dim> void MpmSimulation<dim>::pointsSplit() {
+    buildMaterialLists();
+    lightestMass_ = lightestMass(); // the coupling's stable step follows the lightest point
+    if (coupling_) coupling_->setParticles(particles_, comm_);
+}
+
 template <int dim> double MpmSimulation<dim>::gimpHalfWidth() const {
     // GIMP's particle half-width l_p = ½ V_p^(1/dim), in cell units, from the mean seeding volume.
     // The sum in fixed point (units of 2⁻⁵² h): integer sums are exact, so l_p is the same for
     // any order of the points, on any number of threads or ranks and after a restart (GIMP
     // weights at the support's edge are that sensitive: docs/parallel.md).
+    // A point split k times (ParticleSplitting) stands for 2⁻ᵏ of its seed, whose V⁰ is 2ᵏ its
+    // own: weighted so, its children give the seed's share exactly, restarted or not.
     __extension__ using Int128 = __int128;
-    Int128 sum = 0;
-    for (double v0 : particles_.volume0)
-        sum += std::llround(std::ldexp(std::pow(v0, 1.0 / dim) * grid_.invH(), 52));
-    Int128 total = 0;
+    constexpr int Deepest = ParticleSplitting<dim>::MaxLevel;
+    const std::vector<int>* levels = splitting_ ? &splitting_->levels(particles_) : nullptr;
+    Int128 sum = 0, count = 0;
+    for (std::size_t i = 0; i < particles_.size(); ++i) {
+        const int k = levels ? (*levels)[i] : 0;
+        const double side = std::pow(std::ldexp(particles_.volume0[i], k), 1.0 / dim);
+        sum += Int128(std::llround(std::ldexp(side * grid_.invH(), 52))) << (Deepest - k);
+        count += Int128(1) << (Deepest - k);
+    }
+    Int128 total = 0, seeds = 0;
     for (const Int128 part : comm_.gather(sum))
         total += part;
-    const double n = static_cast<double>(comm_.sum(static_cast<Index>(particles_.size())));
-    return 0.5 * std::ldexp(static_cast<double>(total), -52) / n;
+    for (const Int128 part : comm_.gather(count))
+        seeds += part;
+    return 0.5 * std::ldexp(static_cast<double>(total), -52) / static_cast<double>(seeds);
 }
 
 template <int dim> void MpmSimulation<dim>::gravityPreload() {
@@ -345,6 +374,7 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
             buildMaterialLists();
             removed_ += left;
         }
+    if (splitting_ && splitting_->apply(particles_, comm_) > 0) pointsSplit();
     if (subdomain_) exchangePoints();
     const Index outside = sort_.update(particles_, grid_);
     failIfAny(outside >= 0, "sort", outside, "left the grid");

@@ -16,6 +16,7 @@
 #include "particles/BlockSort.hpp"
 #include "particles/ParticleSeeder.hpp"
 #include "particles/Particles.hpp"
+#include "particles/Splitting.hpp"
 #include "rigid/BodySet.hpp"
 #include "solver/LastGoodState.hpp"
 #include "solver/PhaseTimer.hpp"
@@ -103,6 +104,8 @@ private:
     // Set-up.
     void gravityPreload();
     double gimpHalfWidth() const;
+    double lightestMass() const; ///< min m_p over every rank [kg]
+    void pointsSplit();          ///< after ParticleSplitting added points: lists, masses
     void buildMaterialLists();
     double criticalDeltaT() const;
     /// The limit that governs criticalDeltaT, with its formula and values (log and errors).
@@ -168,6 +171,8 @@ private:
     std::unique_ptr<Transfer<dim>> transfer_;
     std::unique_ptr<StressUpdateOrder> order_;
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
+    /// Particle splitting (`splitting: {maxStretch: …}`), or none
+    std::unique_ptr<ParticleSplitting<dim>> splitting_;
     /// The trans-phase density ρ̄_p (PhaseDensity.hpp), with any trans-phase material
     std::unique_ptr<PhaseDensity<dim>> phaseDensity_;
     BlockSort<dim> sort_;

@@ -10,7 +10,8 @@
 #     constraints and F-bar (velocityConstraint2D, restart3D) on 3 ranks; unilateral walls
 #     under USF resumed from the processor directories bit-identical (slipWalls2D);
 #     the pieces are bit-identical with 1 and 2 threads per rank; reconstructPar -latestTime
-#     gives a serial time directory a serial run restarts from.
+#     gives a serial time directory a serial run restarts from; particle splitting
+#     (splitting2D) on 2 ranks as in serial: the same points, ids and positions.
 #  2. errors, each a clear message, a non-zero exit and no hang: -np unlike the decomposition,
 #     a missing processor directory, -parallel without mpirun, -parallel on a case never
 #     decomposed, rebalancing with a unilateral wall under USF (not supported), decomposePar
@@ -254,4 +255,32 @@ printf "numberOfSubdomains: 2\nmethod: bisection\nrebalance: {maxImbalance: 1.2}
 "$bin/decomposePar" -case "$p" > /dev/null 2>&1 || fail "decomposePar slipWalls2D"
 if mpi 2 "$bin/mpmFoam" -case "$p" -parallel > "$work/e8" 2>&1; then fail "USF walls rebalanced"; fi
 expect "rebalancing is not available with a unilateral wall" "$work/e8"
+# Particle splitting on 2 ranks: the children's ids and positions as in serial.
+s=$work/split1 p2=$work/split2
+cp -r "$root/tests/cases/splitting2D" "$s" && cp -r "$root/tests/cases/splitting2D" "$p2"
+printf "numberOfSubdomains: 2\nmethod: simple\nsimpleCoeffs: {n: [2, 1]}\n" > "$p2/system/decomposeParDict"
+"$bin/mpmFoam" -case "$s" > "$s/log" 2>&1 || fail "splitting2D serial"
+"$bin/decomposePar" -case "$p2" > /dev/null 2>&1 || fail "decomposePar splitting2D"
+mpi 2 "$bin/mpmFoam" -case "$p2" -parallel > "$p2/log" 2>&1 || { tail "$p2/log"; fail "splitting2D np2"; }
+"$bin/reconstructPar" -case "$p2" > /dev/null 2>&1 || fail "reconstructPar splitting2D"
+"$py" - "$s" "$p2" <<'PY' || fail "splitting2D: 2 ranks differ from serial"
+import sys
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+def points(case):
+    r = vtkXMLUnstructuredGridReader()
+    r.SetFileName(case + "/0.12/particles.vtu")
+    r.Update()
+    o = r.GetOutput()
+    ids = vtk_to_numpy(o.GetPointData().GetArray("id"))
+    k = np.argsort(ids)
+    return ids[k], vtk_to_numpy(o.GetPoints().GetData())[k]
+
+(i1, x1), (i2, x2) = points(sys.argv[1]), points(sys.argv[2])
+print("splitting2D: %d points in serial, %d on 2 ranks; largest position difference %.3g m"
+      % (len(i1), len(i2), np.abs(x1 - x2).max() if len(i1) == len(i2) else np.inf))
+sys.exit(not (len(i1) == len(i2) > 800 and (i1 == i2).all() and np.abs(x1 - x2).max() < 1e-12))
+PY
 echo "PASS parallel"

@@ -7,7 +7,8 @@
 #     (bodyContact2D, sdemBodies2D: with body–body contact history in uniform/bodyContacts at T/2;
 #     viscoelastic2D: with the stored elastic stress σᵉ of flowing points at T/2;
 #     slipWalls2D: with the USF wall contact of the last grid update in uniform/wallContact;
-#     sdemBlock2D: with the sdem coupling's tangential springs δ_t (contactSlip) at T/2)
+#     sdemBlock2D: with the sdem coupling's tangential springs δ_t (contactSlip) at T/2;
+#     splitting2D: with points split before T/2 and more split after it)
 #     final particles.vtu;
 #  3. ParaView's readers (VTK's XML readers) load particles.pvd and every time directory.
 set -euo pipefail
@@ -20,7 +21,7 @@ run() { # case threads [extra args]
         { echo "FAIL: mpmFoam failed on $dir"; cat "$dir/log.mpmFoam.$threads"; exit 1; }
 }
 
-for c in restart2D restart3D restartBodies2D bodyContact2D sdemBodies2D vibratedBlock2D viscoelastic2D slipWalls2D sdemBlock2D; do
+for c in restart2D restart3D restartBodies2D bodyContact2D sdemBodies2D vibratedBlock2D viscoelastic2D slipWalls2D sdemBlock2D splitting2D; do
     src=$root/tests/cases/$c
     for t in 1 2; do
         rm -rf "$work/$c.$t" && cp -r "$src" "$work/$c.$t"
@@ -80,6 +81,20 @@ r = vtk.vtkXMLUnstructuredGridReader()
 r.SetFileName(sys.argv[1])
 r.Update()
 sys.exit(not (abs(vtk_to_numpy(r.GetOutput().GetPointData().GetArray("contactSlip"))) > 0).any())
+PY
+    fi
+    if [[ $c == splitting2D ]]; then # points split before the restart time and after it
+        "$py" - "$half" "$mid" <<'PY' || { echo "FAIL: $c: no split before or after $mid (the test would prove nothing)"; fail=1; }
+import os, sys, vtk
+def points(t):
+    r = vtk.vtkXMLUnstructuredGridReader()
+    r.SetFileName(os.path.join(sys.argv[1], t, "particles.vtu"))
+    r.Update()
+    return r.GetOutput().GetNumberOfPoints()
+times = sorted((d for d in os.listdir(sys.argv[1]) if d[0].isdigit()), key=float)
+n0, nMid, nEnd = points(times[0]), points(sys.argv[2]), points(times[-1])
+print("splitting2D: %d points at 0, %d at the restart time, %d at the end" % (n0, nMid, nEnd))
+sys.exit(not n0 < nMid < nEnd)
 PY
     fi
     last=$(ls -d "$work/$c.2"/[0-9]* | xargs -n1 basename | sort -g | tail -1)
