@@ -104,6 +104,9 @@ template <int dim> void MpmSimulation<dim>::logDerivedConstants() const {
             os << '(' << b->inertia().transpose() << ')';
         os << " kg m2" << per << '\n';
     }
+    if (splitting_)
+        os << "Particle splitting: a point splits in two when its domain is stretched beyond "
+           << splitting_->maxStretch() << '\n';
     log() << os.str() << '\n';
 }
 
@@ -374,7 +377,11 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
             buildMaterialLists();
             removed_ += left;
         }
-    if (splitting_ && splitting_->apply(particles_, comm_) > 0) pointsSplit();
+    if (splitting_)
+        if (const Index split = splitting_->apply(particles_, comm_); split > 0) {
+            split_ += split; // the same on every rank
+            pointsSplit();
+        }
     if (subdomain_) exchangePoints();
     const Index outside = sort_.update(particles_, grid_);
     failIfAny(outside >= 0, "sort", outside, "left the grid");
@@ -733,6 +740,7 @@ template <int dim> void MpmSimulation<dim>::report(std::ostream& os) const {
     }
     if (const Index removed = comm_.sum(removed_); removed > 0)
         os << removed << " particles left through open faces and were removed\n";
+    if (splitting_ && split_ > 0) os << split_ << " particles were split in two\n";
     // Memory that follows the material: the active blocks' node fields, the particles' state.
     const double active = static_cast<double>(grid_.activeBlocks().size());
     const double nodeBytes = Grid<dim>::BytesPerNode;

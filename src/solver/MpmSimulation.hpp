@@ -173,6 +173,7 @@ private:
     std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
     /// Particle splitting (`splitting: {maxStretch: …}`), or none
     std::unique_ptr<ParticleSplitting<dim>> splitting_;
+    Index split_ = 0; ///< points split in this run, all ranks
     /// The trans-phase density ρ̄_p (PhaseDensity.hpp), with any trans-phase material
     std::unique_ptr<PhaseDensity<dim>> phaseDensity_;
     BlockSort<dim> sort_;
