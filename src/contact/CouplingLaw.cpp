@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/CouplingLaw.hpp"
 
+#include "core/Constants.hpp"
 #include "core/Parallel.hpp"
 
 #include <cmath>
@@ -75,7 +76,7 @@ public:
 
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
-        const double fourPi2OverH2 = 4.0 * M_PI * M_PI / (this->h_ * this->h_);
+        const double fourPi2OverH2 = 4.0 * pi * pi / (this->h_ * this->h_);
         const Index n = static_cast<Index>(contacts.size());
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index k = 0; k < n; ++k) {
@@ -115,7 +116,7 @@ public:
 
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
-        const double fourPi2OverH2 = 4.0 * M_PI * M_PI / (this->h_ * this->h_);
+        const double fourPi2OverH2 = 4.0 * pi * pi / (this->h_ * this->h_);
         const Index n = static_cast<Index>(contacts.size());
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index k = 0; k < n; ++k) {
@@ -132,8 +133,8 @@ public:
     /// Δt ≤ 2π √(m_p / k_N) [000 Eq. 24].
     double stableDeltaT(double m, double c) const override {
         const double kN =
-            stiffness_ > 0 ? stiffness_ : 4.0 * M_PI * M_PI * m * c * c / (this->h_ * this->h_);
-        return 2.0 * M_PI * std::sqrt(m / kN);
+            stiffness_ > 0 ? stiffness_ : 4.0 * pi * pi * m * c * c / (this->h_ * this->h_);
+        return 2.0 * pi * std::sqrt(m / kN);
     }
 
 private:

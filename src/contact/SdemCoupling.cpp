@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/SdemCoupling.hpp"
 
+#include "core/Constants.hpp"
 #include "core/Parallel.hpp"
 
 #include <cmath>
@@ -51,7 +52,7 @@ void SdemCoupling<dim>::forces(const std::vector<Contact<dim>>& contacts, double
 }
 
 template <int dim> double SdemCoupling<dim>::stableDeltaT(double m, double) const {
-    return 2.0 * M_PI * std::sqrt(m / kn_);
+    return 2.0 * pi * std::sqrt(m / kn_);
 }
 
 template class SdemCoupling<2>;

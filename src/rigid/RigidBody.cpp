@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/RigidBody.hpp"
 
+#include "core/Constants.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <ostream>
@@ -10,8 +12,6 @@
 namespace mpm {
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 /// `%.17g`, independent of the global locale: read back bit-identically by Dictionary.
 std::string fmt(double value) {

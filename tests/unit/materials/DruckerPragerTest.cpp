@@ -3,6 +3,7 @@
 // trans-phase gasification, input checks; fastExp.
 #include "materials/DruckerPrager.hpp"
 #include "TestSupport.hpp"
+#include "core/Constants.hpp"
 #include "materials/HenckyElastic.hpp"
 #include "materials/Material.hpp"
 
@@ -20,7 +21,6 @@
 namespace mpm {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 const double sqrt2 = std::sqrt(2.0);
 
 Dictionary parse(const std::string& text) {
