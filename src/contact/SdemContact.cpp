@@ -10,17 +10,6 @@
 
 namespace mpm {
 
-namespace {
-constexpr double pi = 3.14159265358979323846;
-constexpr double kappa2 = 0.1; ///< [001 Eq. 51]: a tenth of the contact period
-
-double reducedMass(const RigidBody<2>& a, const RigidBody<2>& b) {
-    if (a.motion() == Motion::Fixed) return b.mass();
-    if (b.motion() == Motion::Fixed) return a.mass();
-    return a.mass() * b.mass() / (a.mass() + b.mass());
-}
-} // namespace
-
 SdemContact::SdemContact(const Dictionary& dict)
     : kn_(dict.getScalar("kn", Bounds::positive())),
       kt_(dict.getScalarOr("kt", kn_, Bounds::nonNegative())),
@@ -38,10 +27,7 @@ double SdemContact::dashpot(double m) const {
 }
 
 double SdemContact::stableDeltaT(const BodyList& bodies) const {
-    double mMin = 1e300;
-    for (const auto& b : bodies)
-        if (b->motion() != Motion::Fixed) mMin = std::min(mMin, b->mass());
-    return kappa2 * 2.0 * pi * std::sqrt(mMin / kn_);
+    return contactStepLimit(bodies, kn_);
 }
 
 Vec<2> SdemContact::separation(const RigidBody<2>& a, const RigidBody<2>& b) const {
@@ -149,14 +135,7 @@ void SdemContact::vertexEdge(BodyList& bodies, int v, int e, const Vec<2>& shift
             const std::array<int, 4> key{v, e, k, l};
             Vec<2> dt_ = Vec<2>::Zero();
             if (const auto it = history.find(key); it != history.end()) dt_ = it->second;
-            dt_ -= dt_.dot(n) * n;
-            dt_ += dt * (vRel - vn * n);
-            Vec<2> ft = -kt_ * dt_;
-            const double cap = mu_ * fn;
-            if (ft.norm() > cap) { // sliding: δ_t scaled back to the Coulomb cap
-                ft *= cap / ft.norm();
-                dt_ = kt_ > 0 ? Vec<2>(-ft / kt_) : Vec<2>::Zero();
-            }
+            const Vec<2> ft = tangentialSpring(dt_, n, vRel, vn, kt_, mu_, fn, dt); // capped
             next[key] = dt_;
             const Vec<2> f = fn * n + ft;
             bv.addForce(f, pv);

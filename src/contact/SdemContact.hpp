@@ -2,6 +2,7 @@
 #pragma once
 
 #include "contact/BodyContact.hpp"
+#include "contact/ContactForce.hpp"
 
 #include <array>
 #include <set>
