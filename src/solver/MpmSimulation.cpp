@@ -6,6 +6,7 @@
 #include "io/ParticleIO.hpp"
 #include "io/PvtuFile.hpp"
 #include "io/SeedingRecord.hpp"
+#include "solver/FailureReport.hpp"
 #include "solver/GravityPreload.hpp"
 #include "solver/StateMeasures.hpp"
 
@@ -672,12 +673,8 @@ template <int dim> void MpmSimulation<dim>::write() {
 template <int dim>
 void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const std::string& what) {
     std::ostringstream os;
-    os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": ";
-    if (particle >= 0)
-        os << (comm_.size() > 1 ? "rank " + std::to_string(comm_.rank()) + ": " : "") << "particle "
-           << particles_.id[particle] << " at (" << particles_.x[particle].transpose() << ") ";
-    os << what << '.';
-    if (particle >= static_cast<Index>(particles_.size())) particle = -1;
+    os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": "
+       << describePoint(particles_, particle, comm_.size() > 1 ? comm_.rank() : -1) << what << '.';
     if (!options_.dryRun && good_.restore(particles_, bodies_, *time_)) {
         write();
         os << "\nThe last good state (step " << time_->index() << ", t = " << time_->value()
