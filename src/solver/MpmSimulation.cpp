@@ -675,7 +675,10 @@ void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const st
     std::ostringstream os;
     os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": "
        << describePoint(particles_, particle, comm_.size() > 1 ? comm_.rank() : -1) << what << '.';
-    if (!options_.dryRun && good_.restore(particles_, bodies_, *time_)) {
+    SolverState solver;
+    if (!options_.dryRun && good_.restore(particles_, bodies_, *time_, solver)) {
+        accelerationWork_ = solver.accelerationWork; // what the written time directory holds
+        if (wallContactIsState()) bc_.setWallContact(solver.wallContact);
         write();
         os << "\nThe last good state (step " << time_->index() << ", t = " << time_->value()
            << " s) is written to " << time_->name() << "/.";

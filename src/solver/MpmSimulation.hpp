@@ -144,7 +144,12 @@ private:
                 const std::string& what);
 
     // Failure handling: keep a recent good state and write it before stopping.
-    void snapshot() { good_.save(particles_, bodies_, *time_); }
+    void snapshot() {
+        good_.save(particles_, bodies_, *time_,
+                   {accelerationWork_, wallContactIsState()
+                                           ? bc_.wallContact()
+                                           : std::vector<std::pair<Index, int>>{}});
+    }
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
 
     const Case& case_;
