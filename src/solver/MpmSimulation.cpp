@@ -524,11 +524,14 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     if (subdomain_) std::copy_n(reactions.begin(), NumReactions, reactions_[0].data());
     failIf(anyNotFinite > 0.0, notFinite, "G2P", st.firstNonFinite,
            "has a velocity that is not finite");
-    if (maxSpeed_ * dt > grid_.h()) {
+    // The displacement of the step, Δt times the grid velocity the points moved with ([000
+    // Eq. 16]), not their new (FLIP) velocity: a point whose FLIP velocity is large moves no
+    // farther for it.
+    if (maxMoveSpeed_ * dt > grid_.h()) {
         std::ostringstream os;
-        os << "moved more than one cell in one step (|v| = " << maxSpeed_ << " m/s, dt = " << dt
+        os << "moved more than one cell in one step (|v| = " << maxMoveSpeed_ << " m/s, dt = " << dt
            << " s, h = " << grid_.h() << " m): the run is unstable or deltaT is too large";
-        fail("G2P", fastestParticle(particles_), os.str());
+        fail("G2P", st.fastestMoving, os.str());
     }
     if (lastKinetic_ > energyBudget_) {
         std::ostringstream os;

@@ -139,4 +139,46 @@ TEST(MpmSimulation, FailureWritesTheLastGoodStateWithItsOwnWorkAndWallContact) {
     EXPECT_EQ(readText(good / "wallContact"), contact);
 }
 
+TEST(MpmSimulation, MovedMoreThanOneCellTestsTheDisplacementNotTheFlipVelocity) {
+    // Two coincident point sets moving at ±V: the grid velocity is 0, so with FLIP the points
+    // keep |v| = V but do not move. A step with V Δt = 4 h must not stop; a set moving at V
+    // must.
+    const auto run = [](bool opposed) {
+        test::TempDir tmp;
+        writeFile(tmp.path() / "system/controlDict", "endTime: 1\ndeltaT: 1e-4\n"
+                                                     "writeInterval: 1\n");
+        writeFile(tmp.path() / "system/mpmSchemes",
+                  "kernel: linear\ntransfer: {type: flip, ratio: 1.0}\nstressUpdate: USL\n");
+        writeFile(tmp.path() / "constant/grid",
+                  "dimension: 2\ncellSize: 0.05\nbounds: {min: [0, 0], max: [1, 1]}\n");
+        writeFile(tmp.path() / "constant/materials",
+                  "block: {type: henckyElastic, density: 1000, E: 1.0e6, nu: 0.3}\n");
+        const std::string region = "  material: block\n  region: {type: box, min: [0.4, 0.4], "
+                                   "max: [0.6, 0.6]}\n";
+        writeFile(tmp.path() / "constant/particles",
+                  "right:\n" + region + "  velocity: [2, 0]\n" +
+                      (opposed ? "left:\n" + region + "  velocity: [-2, 0]\n" : std::string()));
+        const Case cs(tmp.path());
+        Time time(cs);
+        const auto owner = Simulation::create(cs, RunOptions{true, true});
+        auto& sim = dynamic_cast<MpmSimulation<2>&>(*owner);
+        sim.start(time);
+        time.advance(sim.stableDeltaT());
+        try {
+            sim.step(0.1); // |v| Δt = 0.2 m = 4 h
+        } catch (const RunError& e) {
+            return std::string(e.what());
+        }
+        double moved = 0;
+        for (const auto& x : sim.particles().x)
+            moved = std::max(moved, std::fabs(x[0] - 0.5));
+        EXPECT_LT(moved, 0.1 + 1e-9); // no point left the block's span
+        return std::string();
+    };
+    EXPECT_EQ(run(true), "");
+    const std::string stopped = run(false);
+    EXPECT_NE(stopped.find("moved more than one cell"), std::string::npos) << stopped;
+    EXPECT_NE(stopped.find("particle "), std::string::npos) << stopped;
+}
+
 } // namespace
