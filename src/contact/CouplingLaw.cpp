@@ -2,7 +2,6 @@
 #include "contact/CouplingLaw.hpp"
 
 #include "core/Constants.hpp"
-#include "core/Parallel.hpp"
 
 #include <cmath>
 
@@ -77,10 +76,7 @@ public:
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
         const double fourPi2OverH2 = 4.0 * pi * pi / (this->h_ * this->h_);
-        const Index n = static_cast<Index>(contacts.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-        for (Index k = 0; k < n; ++k) {
-            const Contact<dim>& c = contacts[k];
+        this->forEachContact(contacts, f, [&](const Contact<dim>& c) -> Vec<dim> {
             const double xi = std::max(c.phi, this->minimumGap(c.rp));
             double fn = 0;
             if (xi < c.rp) {
@@ -88,16 +84,12 @@ public:
                     c.mass * c.wave * c.wave * fourPi2OverH2 * inverseStiffnessShape_;
                 fn = kappa * (xi - c.rp) * (2.0 * std::log(xi / c.rp) - c.rp / xi + 1.0);
             }
-            f[k] = fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
-        }
+            return fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
+        });
     }
-    bool nonPenetrating() const override {
-        return true;
-    }
+    bool nonPenetrating() const override { return true; }
     /// κ is chosen so that 2π√(m_p/k_N) ≥ h/c for ξ ≥ ξ̄: the contact does not lower Δt.
-    double stableDeltaT(double, double) const override {
-        return 1e300;
-    }
+    double stableDeltaT(double, double) const override { return 1e300; }
 
 private:
     double xiBar_ = 0.2;
@@ -117,19 +109,14 @@ public:
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
         const double fourPi2OverH2 = 4.0 * pi * pi / (this->h_ * this->h_);
-        const Index n = static_cast<Index>(contacts.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-        for (Index k = 0; k < n; ++k) {
-            const Contact<dim>& c = contacts[k];
+        this->forEachContact(contacts, f, [&](const Contact<dim>& c) -> Vec<dim> {
             const double kN =
                 stiffness_ > 0 ? stiffness_ : c.mass * c.wave * c.wave * fourPi2OverH2;
             const double fn = c.phi < c.rp ? kN * (c.rp - c.phi) : 0.0;
-            f[k] = fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
-        }
+            return fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
+        });
     }
-    bool nonPenetrating() const override {
-        return false;
-    }
+    bool nonPenetrating() const override { return false; }
     /// Δt ≤ 2π √(m_p / k_N) [000 Eq. 24].
     double stableDeltaT(double m, double c) const override {
         const double kN =

@@ -2,7 +2,6 @@
 #include "contact/SdemCoupling.hpp"
 
 #include "core/Constants.hpp"
-#include "core/Parallel.hpp"
 
 #include <cmath>
 
@@ -32,10 +31,7 @@ template <int dim>
 void SdemCoupling<dim>::forces(const std::vector<Contact<dim>>& contacts, double dt,
                                std::vector<double>& slip, std::vector<Vec<dim>>& f) const {
     const double mu = this->mu_;
-    const Index n = static_cast<Index>(contacts.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-    for (Index k = 0; k < n; ++k) {
-        const Contact<dim>& c = contacts[k];
+    this->forEachContact(contacts, f, [&](const Contact<dim>& c) -> Vec<dim> {
         const double xi = std::max(c.rp - c.phi, 0.0); // overlap [001 Eq. 44]
         const double fn = kn_ * xi;
         const Vec<dim> t = tangent(c.normal);
@@ -47,8 +43,8 @@ void SdemCoupling<dim>::forces(const std::vector<Contact<dim>>& contacts, double
         } else {
             delta = 0;
         }
-        f[k] = fn * c.normal - (kt_ * delta) * t; // [001 Eq. 43]
-    }
+        return fn * c.normal - (kt_ * delta) * t; // [001 Eq. 43]
+    });
 }
 
 template <int dim> double SdemCoupling<dim>::stableDeltaT(double m, double) const {
