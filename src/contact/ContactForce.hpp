@@ -11,8 +11,8 @@
 
 namespace mpm {
 
-/// What the body–body contact laws (linearSpring, sdem) share: one normal dashpot with the
-/// restitution the user asks, one tangential spring, one reduced mass and one step limit.
+// What the body–body contact laws (linearSpring, sdem) share: one normal dashpot with the
+// restitution the user asks, one tangential spring, one reduced mass and one step limit.
 
 /// Reduced mass of a contact pair m* = m_a m_b/(m_a + m_b) [kg] (per metre in 2D); a fixed body's
 /// mass counts as infinite (m* is then the other body's mass).
@@ -37,12 +37,12 @@ double contactStepLimit(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodi
 /// attraction), c = 2 ζ √(k_n m*). Because f_n is cut at zero the grains separate before δ = 0,
 /// so ζ is not the textbook −ln e/√(π² + ln² e) (the restitution of the uncut dashpot: a cut one
 /// with that ζ bounces higher than e, e.g. 0.32 for e = 0.2): ζ solves e(ζ) = e for the exact
-/// restitution of the cut linear dashpot (Schwager & Pöschel 2007, Granular Matter 9:465,
-/// Eq. 12–13), with β = ζ ω₀, ω = ω₀√(1 − ζ²):
+/// restitution of the cut linear dashpot (Schwager & Pöschel 2007, Granular Matter 9:465), with
+/// β = ζ ω₀, ω = ω₀√(1 − ζ²):
 ///   e = exp(−(β/ω)(π − atan(2βω/(ω² − β²)))) for ζ < 1/√2,
 ///   e = exp(−(β/ω) atan(2βω/(β² − ω²)))      for 1/√2 ≤ ζ < 1,
 /// so an underdamped dashpot reaches e(1) = e⁻² ≈ 0.135 at the least: restitution is limited to
-/// [0.14, 1] (RestitutionDashpot::bounds()).
+/// [0.14, 1] (RestitutionDashpot::lowest).
 class RestitutionDashpot {
 public:
     /// e ∈ [0.14, 1]; 1: no dashpot.
