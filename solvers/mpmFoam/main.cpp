@@ -9,10 +9,7 @@
 #include "solver/PostProcess.hpp"
 #include "solver/Simulation.hpp"
 
-#include <omp.h>
-
 #include <cstring>
-#include <iomanip>
 #include <iostream>
 
 using namespace mpm;

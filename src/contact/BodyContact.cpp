@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/BodyContact.hpp"
 
+#include "contact/ContactForce.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -136,19 +138,14 @@ void findProbeContacts(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodie
 
 namespace {
 
-/// Linear spring contact [001 Eq. 38–43]: f_n = k_n δ (− c_n v_n with the optional dashpot),
+/// Linear spring contact [001 Eq. 38–43]: f_n = k_n δ (− c v_n with the optional dashpot),
 /// tangential spring ξ ← P(ξ) + v_t Δt (P: projection on the current tangent plane),
-/// f_t = −k_t ξ capped at μ f_n (ξ scaled back to the cap: sliding). The dashpot from a
-/// restitution e: c_n = 2 ζ √(k_n m*), m* = m_a m_b/(m_a + m_b) (a fixed body's mass counts as
-/// infinite), with ζ such that a head-on collision with this law leaves at e times its impact
-/// speed. Because f_n is cut at zero (no attraction) the grains separate before δ = 0, so ζ is
-/// not the textbook −ln e/√(π² + ln² e): it solves e(ζ) = e for the exact restitution of the cut
-/// linear dashpot (Schwager & Pöschel 2007, Granular Matter 9:465), with β = ζ ω₀,
-/// ω = ω₀√(1 − ζ²): e = exp(−(β/ω)(π − atan(2βω/(ω² − β²)))) for ζ < 1/√2, and
-/// e = exp(−(β/ω) atan(2βω/(β² − ω²))) for 1/√2 ≤ ζ < 1 (so e ≥ e⁻² ≈ 0.135: restitution is
-/// limited to [0.14, 1]). Keys: normalStiffness k_n [N/m], tangentialStiffness
-/// k_t (default k_n) [N/m], friction μ (default 0), restitution e ∈ (0, 1] (default 1: none).
-/// In 2D forces are per metre of depth and stiffnesses per metre too.
+/// f_t = −k_t ξ capped at μ f_n (ξ scaled back to the cap: sliding) (tangentialSpring). The
+/// dashpot from a restitution e: c = 2 ζ √(k_n m*) (reducedMass), with ζ such that a head-on
+/// collision with this law leaves at e times its impact speed (RestitutionDashpot: the exact
+/// restitution of the cut dashpot, so e ∈ [0.14, 1]). Keys: normalStiffness k_n [N/m],
+/// tangentialStiffness k_t (default k_n) [N/m], friction μ (default 0), restitution e ∈ [0.14, 1]
+/// (default 1: none). In 2D forces are per metre of depth and stiffnesses per metre too.
 template <int dim> class LinearSpringContact final : public BodyContactLaw<dim> {
 public:
     using typename BodyContactLaw<dim>::BodyList;
@@ -156,17 +153,9 @@ public:
     explicit LinearSpringContact(const Dictionary& dict)
         : kn_(dict.getScalar("normalStiffness", Bounds::positive())),
           kt_(dict.getScalarOr("tangentialStiffness", kn_, Bounds::nonNegative())),
-          mu_(dict.getScalarOr("friction", 0.0, Bounds::nonNegative())) {
-        // Underdamped (ζ < 1), the cut dashpot reaches e(1) = e⁻² at most.
-        const double e = dict.getScalarOr("restitution", 1.0, Bounds::closed(0.14, 1.0));
-        // e(ζ) falls monotonically from 1 (ζ = 0) to 0 (ζ → 1): bisection.
-        double lo = 0.0, hi = 1.0 - 1e-12;
-        if (e < 1.0)
-            for (int k = 0; k < 200 && hi - lo > 1e-15; ++k) {
-                const double mid = 0.5 * (lo + hi);
-                (restitution(mid) > e ? lo : hi) = mid;
-            }
-        zeta_ = e < 1.0 ? 0.5 * (lo + hi) : 0.0;
+          mu_(dict.getScalarOr("friction", 0.0, Bounds::nonNegative())),
+          dashpot_(dict.getScalarOr("restitution", 1.0,
+                                    Bounds::closed(RestitutionDashpot::lowest, 1.0))) {
         dict.checkUnknownKeys();
     }
 
@@ -180,19 +169,12 @@ public:
             const Vec<dim> vRel = p.velocityAt(c.proberPoint) - t.velocityAt(c.point);
             const double vn = vRel.dot(c.normal);
             double fn = kn_ * c.overlap;
-            if (zeta_ > 0) fn -= 2.0 * zeta_ * std::sqrt(kn_ * reducedMass(p, t)) * vn;
+            if (dashpot_.any()) fn -= dashpot_.coefficient(kn_, reducedMass(p, t)) * vn;
             fn = std::max(fn, 0.0); // no attraction
             Vec<dim> xi = Vec<dim>::Zero();
             const auto key = std::array<int, 4>{c.prober, c.target, c.probe, 0};
             if (const auto it = history.find(key); it != history.end()) xi = it->second;
-            xi -= xi.dot(c.normal) * c.normal;
-            xi += dt * (vRel - vn * c.normal);
-            Vec<dim> ft = -kt_ * xi;
-            const double cap = mu_ * fn;
-            if (ft.norm() > cap) {
-                ft *= cap / ft.norm();
-                xi = kt_ > 0 ? Vec<dim>(-ft / kt_) : Vec<dim>::Zero();
-            }
+            const Vec<dim> ft = tangentialSpring(xi, c.normal, vRel, vn, kt_, mu_, fn, dt);
             next[key] = xi;
             const Vec<dim> f = fn * c.normal + ft;
             p.addForce(f, c.proberPoint);
@@ -202,31 +184,12 @@ public:
     }
 
     double stableDeltaT(const BodyList& bodies) const override {
-        // [001 Eq. 51]: 2π κ₂ √(m_min/k_n), κ₂ = 0.1 (a tenth of the contact period).
-        double mMin = 1e300;
-        for (const auto& b : bodies)
-            if (b->motion() != Motion::Fixed) mMin = std::min(mMin, b->mass());
-        return 2.0 * M_PI * 0.1 * std::sqrt(mMin / kn_);
-    }
-
-    /// Restitution of the cut linear dashpot with damping ratio ζ ∈ [0, 1) (see the class).
-    static double restitution(double zeta) {
-        const double w = std::sqrt(1.0 - zeta * zeta); // ω/ω₀
-        const double r = zeta / w;                     // β/ω
-        const double a = zeta < std::sqrt(0.5)
-                             ? M_PI - std::atan(2.0 * zeta * w / (w * w - zeta * zeta))
-                             : std::atan(2.0 * zeta * w / (zeta * zeta - w * w));
-        return std::exp(-r * a);
+        return contactStepLimit(bodies, kn_); // [001 Eq. 51]
     }
 
 private:
-    static double reducedMass(const RigidBody<dim>& a, const RigidBody<dim>& b) {
-        if (a.motion() == Motion::Fixed) return b.mass();
-        if (b.motion() == Motion::Fixed) return a.mass();
-        return a.mass() * b.mass() / (a.mass() + b.mass());
-    }
-
-    double kn_, kt_, mu_, zeta_ = 0;
+    double kn_, kt_, mu_;
+    RestitutionDashpot dashpot_;
     ContactProbes<dim> probes_;
     std::vector<ProbeContact<dim>> contacts_;
 };

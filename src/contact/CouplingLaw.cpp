@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/CouplingLaw.hpp"
 
-#include "core/Parallel.hpp"
+#include "core/Constants.hpp"
 
 #include <cmath>
 
@@ -75,11 +75,8 @@ public:
 
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
-        const double fourPi2OverH2 = 4.0 * M_PI * M_PI / (this->h_ * this->h_);
-        const Index n = static_cast<Index>(contacts.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-        for (Index k = 0; k < n; ++k) {
-            const Contact<dim>& c = contacts[k];
+        const double fourPi2OverH2 = 4.0 * pi * pi / (this->h_ * this->h_);
+        this->forEachContact(contacts, f, [&](const Contact<dim>& c) -> Vec<dim> {
             const double xi = std::max(c.phi, this->minimumGap(c.rp));
             double fn = 0;
             if (xi < c.rp) {
@@ -87,16 +84,12 @@ public:
                     c.mass * c.wave * c.wave * fourPi2OverH2 * inverseStiffnessShape_;
                 fn = kappa * (xi - c.rp) * (2.0 * std::log(xi / c.rp) - c.rp / xi + 1.0);
             }
-            f[k] = fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
-        }
+            return fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
+        });
     }
-    bool nonPenetrating() const override {
-        return true;
-    }
+    bool nonPenetrating() const override { return true; }
     /// κ is chosen so that 2π√(m_p/k_N) ≥ h/c for ξ ≥ ξ̄: the contact does not lower Δt.
-    double stableDeltaT(double, double) const override {
-        return 1e300;
-    }
+    double stableDeltaT(double, double) const override { return 1e300; }
 
 private:
     double xiBar_ = 0.2;
@@ -115,25 +108,20 @@ public:
 
     void forces(const std::vector<Contact<dim>>& contacts, double dt, std::vector<double>& slip,
                 std::vector<Vec<dim>>& f) const override {
-        const double fourPi2OverH2 = 4.0 * M_PI * M_PI / (this->h_ * this->h_);
-        const Index n = static_cast<Index>(contacts.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-        for (Index k = 0; k < n; ++k) {
-            const Contact<dim>& c = contacts[k];
+        const double fourPi2OverH2 = 4.0 * pi * pi / (this->h_ * this->h_);
+        this->forEachContact(contacts, f, [&](const Contact<dim>& c) -> Vec<dim> {
             const double kN =
                 stiffness_ > 0 ? stiffness_ : c.mass * c.wave * c.wave * fourPi2OverH2;
             const double fn = c.phi < c.rp ? kN * (c.rp - c.phi) : 0.0;
-            f[k] = fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
-        }
+            return fn * c.normal + this->frictionForce(c, fn, dt, slip[c.particle]);
+        });
     }
-    bool nonPenetrating() const override {
-        return false;
-    }
+    bool nonPenetrating() const override { return false; }
     /// Δt ≤ 2π √(m_p / k_N) [000 Eq. 24].
     double stableDeltaT(double m, double c) const override {
         const double kN =
-            stiffness_ > 0 ? stiffness_ : 4.0 * M_PI * M_PI * m * c * c / (this->h_ * this->h_);
-        return 2.0 * M_PI * std::sqrt(m / kN);
+            stiffness_ > 0 ? stiffness_ : 4.0 * pi * pi * m * c * c / (this->h_ * this->h_);
+        return 2.0 * pi * std::sqrt(m / kN);
     }
 
 private:

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
+#include "core/Parallel.hpp"
 #include "core/Registry.hpp"
 #include "core/Types.hpp"
 
@@ -69,6 +70,17 @@ public:
     static std::unique_ptr<CouplingLaw> create(const Dictionary& dict, double h);
 
 protected:
+    /// The loop of every law's forces(): f[k] = force(contacts[k]) for each contact, on the
+    /// threads when worth it (each contact writes its own f[k] and its point's slip only).
+    template <class Force>
+    static void forEachContact(const std::vector<Contact<dim>>& contacts, std::vector<Vec<dim>>& f,
+                               Force&& force) {
+        const Index n = static_cast<Index>(contacts.size());
+#pragma omp parallel for if (worthThreads(n)) schedule(static)
+        for (Index k = 0; k < n; ++k)
+            f[k] = force(contacts[k]);
+    }
+
     /// Tangential force of the smoothed Coulomb law [004 Eq. 35–38] on a point with normal
     /// force fn, advancing its accumulated slip u_T.
     Vec<dim> frictionForce(const Contact<dim>& c, double fn, double dt, double& slip) const;

@@ -10,38 +10,23 @@
 
 namespace mpm {
 
-namespace {
-constexpr double pi = 3.14159265358979323846;
-constexpr double kappa2 = 0.1; ///< [001 Eq. 51]: a tenth of the contact period
-
-double reducedMass(const RigidBody<2>& a, const RigidBody<2>& b) {
-    if (a.motion() == Motion::Fixed) return b.mass();
-    if (b.motion() == Motion::Fixed) return a.mass();
-    return a.mass() * b.mass() / (a.mass() + b.mass());
-}
-} // namespace
-
 SdemContact::SdemContact(const Dictionary& dict)
     : kn_(dict.getScalar("kn", Bounds::positive())),
       kt_(dict.getScalarOr("kt", kn_, Bounds::nonNegative())),
       mu_(dict.getScalarOr("friction", 0.0, Bounds::nonNegative())),
-      e_(dict.getScalarOr("restitution", 1.0, Bounds{0.0, 1.0, false, true})),
+      dashpot_(
+          dict.getScalarOr("restitution", 1.0, Bounds::closed(RestitutionDashpot::lowest, 1.0))),
       vdGiven_(dict.getScalarOr("verletDistance", 0.0, Bounds::positive())), file_(dict.fileName()),
       line_(dict.line("type")) {
     dict.checkUnknownKeys();
 }
 
 double SdemContact::dashpot(double m) const {
-    if (e_ >= 1.0) return 0.0;
-    const double l = std::log(e_);
-    return -2.0 * l * std::sqrt(m * kn_) / std::sqrt(pi * pi + l * l);
+    return dashpot_.coefficient(kn_, m);
 }
 
 double SdemContact::stableDeltaT(const BodyList& bodies) const {
-    double mMin = 1e300;
-    for (const auto& b : bodies)
-        if (b->motion() != Motion::Fixed) mMin = std::min(mMin, b->mass());
-    return kappa2 * 2.0 * pi * std::sqrt(mMin / kn_);
+    return contactStepLimit(bodies, kn_);
 }
 
 Vec<2> SdemContact::separation(const RigidBody<2>& a, const RigidBody<2>& b) const {
@@ -145,18 +130,11 @@ void SdemContact::vertexEdge(BodyList& bodies, int v, int e, const Vec<2>& shift
             const Vec<2> vRel = bv.velocityAt(pv) - be.velocityAt(p);
             const double vn = vRel.dot(n);
             double fn = kn_ * xi;
-            if (e_ < 1.0) fn = std::max(0.0, fn - dashpot(reducedMass(bv, be)) * vn);
+            if (dashpot_.any()) fn = std::max(0.0, fn - dashpot(reducedMass(bv, be)) * vn);
             const std::array<int, 4> key{v, e, k, l};
             Vec<2> dt_ = Vec<2>::Zero();
             if (const auto it = history.find(key); it != history.end()) dt_ = it->second;
-            dt_ -= dt_.dot(n) * n;
-            dt_ += dt * (vRel - vn * n);
-            Vec<2> ft = -kt_ * dt_;
-            const double cap = mu_ * fn;
-            if (ft.norm() > cap) { // sliding: δ_t scaled back to the Coulomb cap
-                ft *= cap / ft.norm();
-                dt_ = kt_ > 0 ? Vec<2>(-ft / kt_) : Vec<2>::Zero();
-            }
+            const Vec<2> ft = tangentialSpring(dt_, n, vRel, vn, kt_, mu_, fn, dt); // capped
             next[key] = dt_;
             const Vec<2> f = fn * n + ft;
             bv.addForce(f, pv);
@@ -184,7 +162,7 @@ MPM_SCHEMA("bodyContact", "sdem",
             {{"kn", "scalar", "N/m per metre", "required", "normal stiffness k_n (> 0)"},
              {"kt", "scalar", "N/m per metre", "kn", "tangential stiffness k_t (≥ 0)"},
              {"friction", "scalar", "-", "0", "Coulomb μ (≥ 0)"},
-             {"restitution", "scalar", "-", "1", "e in (0, 1]; 1: no dashpot"},
+             {"restitution", "scalar", "-", "1", "e in [0.14, 1]; 1: no dashpot"},
              {"verletDistance", "scalar", "m", "0.1 R_min", "neighbour-list margin V_d (> 0)"}},
             "{type: sdem, kn: 6.0e6, kt: 3.0e5, friction: 0.2}"});
 

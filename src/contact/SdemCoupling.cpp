@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/SdemCoupling.hpp"
 
-#include "core/Parallel.hpp"
+#include "core/Constants.hpp"
 
 #include <cmath>
 
@@ -31,10 +31,7 @@ template <int dim>
 void SdemCoupling<dim>::forces(const std::vector<Contact<dim>>& contacts, double dt,
                                std::vector<double>& slip, std::vector<Vec<dim>>& f) const {
     const double mu = this->mu_;
-    const Index n = static_cast<Index>(contacts.size());
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-    for (Index k = 0; k < n; ++k) {
-        const Contact<dim>& c = contacts[k];
+    this->forEachContact(contacts, f, [&](const Contact<dim>& c) -> Vec<dim> {
         const double xi = std::max(c.rp - c.phi, 0.0); // overlap [001 Eq. 44]
         const double fn = kn_ * xi;
         const Vec<dim> t = tangent(c.normal);
@@ -46,12 +43,12 @@ void SdemCoupling<dim>::forces(const std::vector<Contact<dim>>& contacts, double
         } else {
             delta = 0;
         }
-        f[k] = fn * c.normal - (kt_ * delta) * t; // [001 Eq. 43]
-    }
+        return fn * c.normal - (kt_ * delta) * t; // [001 Eq. 43]
+    });
 }
 
 template <int dim> double SdemCoupling<dim>::stableDeltaT(double m, double) const {
-    return 2.0 * M_PI * std::sqrt(m / kn_);
+    return 2.0 * pi * std::sqrt(m / kn_);
 }
 
 template class SdemCoupling<2>;

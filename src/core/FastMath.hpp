@@ -37,34 +37,4 @@ inline double fastLog(double x) {
     return e * 0.6931471805599453 + 2.0 * s * p;
 }
 
-/// eˣ for |x| ≤ 700 (clamped outside), within about 1 ulp, written so that loops over it
-/// vectorise (no calls, no errno): x = k ln 2 + r with k = rint(x/ln 2), |r| ≤ ½ ln 2 (ln 2 split
-/// in two parts so that k ln 2 is exact), eʳ by its Taylor series to r¹³ (truncation < 5e-18),
-/// 2ᵏ built from the exponent bits.
-inline double fastExp(double x) {
-    x = x < -700.0 ? -700.0 : x;
-    x = x > 700.0 ? 700.0 : x;
-    const double k = std::nearbyint(x * 1.4426950408889634);
-    const double r = (x - k * 6.93147180369123816490e-01) - k * 1.90821492927058770002e-10;
-    double s = 1.0 / 6227020800.0;
-    s = s * r + 1.0 / 479001600.0;
-    s = s * r + 1.0 / 39916800.0;
-    s = s * r + 1.0 / 3628800.0;
-    s = s * r + 1.0 / 362880.0;
-    s = s * r + 1.0 / 40320.0;
-    s = s * r + 1.0 / 5040.0;
-    s = s * r + 1.0 / 720.0;
-    s = s * r + 1.0 / 120.0;
-    s = s * r + 1.0 / 24.0;
-    s = s * r + 1.0 / 6.0;
-    s = s * r + 0.5;
-    s = s * r + 1.0;
-    s = s * r + 1.0;
-    const std::uint64_t bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(k) + 1023)
-                               << 52;
-    double scale;
-    std::memcpy(&scale, &bits, sizeof scale);
-    return s * scale;
-}
-
 } // namespace mpm

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "forces/RampAcceleration.hpp"
 
+#include "core/Constants.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace mpm {
 
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
+namespace {}
 
 template <int dim>
 RampAcceleration<dim>::RampAcceleration(const Dictionary& dict)

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "forces/SinusoidalAcceleration.hpp"
 
+#include "core/Constants.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace mpm {
 
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
+namespace {}
 
 template <int dim>
 SinusoidalAcceleration<dim>::SinusoidalAcceleration(const Dictionary& dict)

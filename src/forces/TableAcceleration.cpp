@@ -1,20 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "forces/TableAcceleration.hpp"
 
+#include "core/Format.hpp"
+
 #include <algorithm>
-#include <charconv>
 #include <string>
 
 namespace mpm {
-
-namespace {
-std::string fmt(double value) {
-    char buffer[64];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, 17);
-    return std::string(buffer, result.ptr);
-}
-} // namespace
 
 template <int dim> TableAcceleration<dim>::TableAcceleration(const Dictionary& dict) {
     const std::vector<std::vector<double>> rows = dict.vectorList("table", 1 + dim);
@@ -22,9 +14,9 @@ template <int dim> TableAcceleration<dim>::TableAcceleration(const Dictionary& d
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (i > 0 && !(rows[i][0] > rows[i - 1][0]))
             dict.error("table", "rows must be sorted by strictly increasing time; row " +
-                                    std::to_string(i) + " (t = " + fmt(rows[i][0]) +
+                                    std::to_string(i) + " (t = " + fullPrecision(rows[i][0]) +
                                     ") is not after row " + std::to_string(i - 1) +
-                                    " (t = " + fmt(rows[i - 1][0]) + ")");
+                                    " (t = " + fullPrecision(rows[i - 1][0]) + ")");
         times_.push_back(rows[i][0]);
         values_.push_back(Eigen::Map<const Vec<dim>>(rows[i].data() + 1));
     }

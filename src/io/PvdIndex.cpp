@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/PvdIndex.hpp"
 
+#include "core/Format.hpp"
 #include "io/ParticleFile.hpp"
 #include "io/XmlFile.hpp"
 
@@ -15,14 +16,6 @@
 namespace mpm::io {
 
 namespace {
-
-/// `%.17g`, independent of the global locale.
-std::string formatTime(double time) {
-    char buffer[64];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof(buffer), time, std::chars_format::general, 17);
-    return std::string(buffer, result.ptr);
-}
 
 std::string unescapeXml(const std::string& text) {
     static const std::pair<const char*, char> entities[] = {
@@ -185,7 +178,7 @@ void PvdIndex::write() const {
                        "byte_order=\"LittleEndian\">\n"
                        "  <Collection>\n";
     for (const Entry& e : entries_) {
-        text += "    <DataSet timestep=\"" + formatTime(e.time) +
+        text += "    <DataSet timestep=\"" + fullPrecision(e.time) +
                 "\" group=\"\" part=\"0\" file=\"" + escapeXml(e.file) + "\"/>\n";
     }
     text += "  </Collection>\n"

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "levelset/SignedDistance.hpp"
 
+#include "core/Constants.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -12,7 +14,7 @@ namespace mpm::levelset {
 namespace {
 
 constexpr int leafSize = 4;
-constexpr double fourPi = 12.566370614359172954;
+constexpr double fourPi = 4.0 * pi;
 
 /// Closest point to p on segment [a, b].
 Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/Constants.hpp"
 #include "core/Types.hpp"
 
 #include <cmath>
@@ -18,12 +19,12 @@
 
 namespace mpm {
 
-constexpr double degree = 3.14159265358979323846 / 180.0;
+constexpr double degree = pi / 180.0;
 
 /// Drucker–Prager coefficient fitted to the compression corners of Mohr–Coulomb,
 /// μ = 2√3 sin φ / (3 − sin φ) [000 Eq. 8], for an angle φ in degrees.
 inline double frictionCoefficient(double angleDegrees) {
-    const double s = std::sin(angleDegrees * 3.14159265358979323846 / 180.0);
+    const double s = std::sin(angleDegrees * pi / 180.0);
     return 2.0 * std::sqrt(3.0) * s / (3.0 - s);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/Constants.hpp"
 #include "materials/DruckerPrager.hpp"
 #include "materials/ElastoPlastic.hpp"
 
@@ -26,7 +27,7 @@ public:
     TensionCutoff cutoff() const { return {}; }
     /// Jaky's K0 = 1 − sin φ.
     double defaultK0(const ElasticConstants& /*c*/) const {
-        return 1.0 - std::sin(phi_ * 3.14159265358979323846 / 180.0);
+        return 1.0 - std::sin(phi_ * pi / 180.0);
     }
 
     /// Friction angle φ [deg].

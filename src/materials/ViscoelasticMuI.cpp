@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/ViscoelasticMuI.hpp"
 
+#include "core/Constants.hpp"
 #include "core/Parallel.hpp"
 #include "materials/FlowRules.hpp"
 #include "materials/HenckyBatch.hpp"
@@ -13,13 +14,12 @@ namespace mpm {
 
 double restitutionViscosity(double restitution, double grainDiameter, double pWaveModulus,
                             double bulkDensity) {
-    const double halfPi = 0.5 * 3.14159265358979323846;
+    const double halfPi = 0.5 * pi;
     return 0.237 * grainDiameter * std::sqrt(pWaveModulus * bulkDensity) *
            std::pow(std::fabs(std::log(restitution)), halfPi);
 }
 
 double continuumRestitution(double zeta) {
-    const double pi = 3.14159265358979323846;
     if (zeta < 1.0)
         return std::exp(-zeta * (pi - 2.0 * std::asin(zeta)) / std::sqrt(1.0 - zeta * zeta));
     if (zeta == 1.0) return std::exp(-2.0);

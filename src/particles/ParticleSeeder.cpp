@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/ParticleSeeder.hpp"
 
+#include "core/Constants.hpp"
 #include "core/SymmetricEigen.hpp"
 #include "particles/Region.hpp"
 #include "particles/Seeding.hpp"
@@ -65,13 +66,13 @@ public:
             const Vec<dim> r = x - origin_;
             const double rn = r.norm();
             if (rn == 0.0) return Vec<dim>::Zero();
-            const double R = dim == 3 ? std::sph_bessel(1, M_PI * rn / length_)
+            const double R = dim == 3 ? std::sph_bessel(1, pi * rn / length_)
                                       : std::cyl_bessel_j(1.0, 2.404825557695773 * rn / length_);
             return amplitude_ * R / rn * r;
         }
         if (!mode_) return value_;
         const double s = (x - origin_).dot(direction_);
-        return amplitude_ * std::sin((2 * n_ - 1) * M_PI * s / (2.0 * length_)) * direction_;
+        return amplitude_ * std::sin((2 * n_ - 1) * pi * s / (2.0 * length_)) * direction_;
     }
 
 private:

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/Region.hpp"
 
+#include "core/Constants.hpp"
 #include "core/Registry.hpp"
 
 #include <algorithm>
@@ -18,8 +19,6 @@ template class Region<2>;
 template class Region<3>;
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 /// The dim numbers of `key` as a vector.
 template <int dim> Vec<dim> readVec(const Dictionary& dict, const std::string& key) {

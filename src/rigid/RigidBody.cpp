@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/RigidBody.hpp"
 
-#include <charconv>
+#include "core/Constants.hpp"
+#include "core/Format.hpp"
+
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -11,20 +13,10 @@ namespace mpm {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
-/// `%.17g`, independent of the global locale: read back bit-identically by Dictionary.
-std::string fmt(double value) {
-    char buffer[64];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, 17);
-    return std::string(buffer, result.ptr);
-}
-
 template <class V> std::string fmtList(const V& v) {
     std::string s = "[";
     for (Eigen::Index i = 0; i < v.size(); ++i)
-        s += (i > 0 ? ", " : "") + fmt(v[i]);
+        s += (i > 0 ? ", " : "") + fullPrecision(v[i]);
     return s + "]";
 }
 
@@ -207,7 +199,7 @@ template <int dim> void RigidBody<dim>::readMotionTable(const Dictionary& m, boo
         for (std::size_t i = 1; i < rows.size(); ++i) {
             if (!(rows[i][0] > rows[i - 1][0])) {
                 m.error("table", "rows must be sorted by strictly increasing time; row " +
-                                     std::to_string(i) + " (t = " + fmt(rows[i][0]) +
+                                     std::to_string(i) + " (t = " + fullPrecision(rows[i][0]) +
                                      ") is not after row " + std::to_string(i - 1));
             }
         }
@@ -391,7 +383,7 @@ template <int dim> void RigidBody<dim>::writeState(std::ostream& os) const {
     if constexpr (dim == 3) {
         os << "quaternion: " << fmtList(Eigen::Vector4d(q_.w(), q_.x(), q_.y(), q_.z())) << "\n";
     } else {
-        os << "angle: " << fmt(theta_) << "\n";
+        os << "angle: " << fullPrecision(theta_) << "\n";
     }
     os << "omegaBody: " << fmtList(omegaBody_) << "\n";
     os << "alphaPrev: " << fmtList(alphaPrev_) << "\n";

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/SphereShape.hpp"
 
+#include "core/Constants.hpp"
+
 #include <cmath>
 #include <string>
 
 namespace mpm {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 constexpr int nLongitude = 24; ///< segments around the z axis (3D) / the circle has 64
 constexpr int nLatitude = 12;  ///< bands from pole to pole
 constexpr int nCircle = 64;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/SpheropolygonShape.hpp"
 
+#include "core/Constants.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -9,7 +11,6 @@
 namespace mpm {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 constexpr int nCircle = 64; ///< segments of a full circle in the output outline
 
 double cross(const Vec<2>& u, const Vec<2>& v) {

@@ -6,6 +6,7 @@
 #include "io/ParticleIO.hpp"
 #include "io/PvtuFile.hpp"
 #include "io/SeedingRecord.hpp"
+#include "solver/FailureReport.hpp"
 #include "solver/GravityPreload.hpp"
 #include "solver/StateMeasures.hpp"
 
@@ -560,11 +561,14 @@ template <int dim> void MpmSimulation<dim>::gridToParticle(double dt) {
     if (subdomain_) std::copy_n(reactions.begin(), NumReactions, reactions_[0].data());
     failIf(anyNotFinite > 0.0, notFinite, "G2P", st.firstNonFinite,
            "has a velocity that is not finite");
-    if (maxSpeed_ * dt > grid_.h()) {
+    // The displacement of the step, Δt times the grid velocity the points moved with ([000
+    // Eq. 16]), not their new (FLIP) velocity: a point whose FLIP velocity is large moves no
+    // farther for it.
+    if (maxMoveSpeed_ * dt > grid_.h()) {
         std::ostringstream os;
-        os << "moved more than one cell in one step (|v| = " << maxSpeed_ << " m/s, dt = " << dt
+        os << "moved more than one cell in one step (|v| = " << maxMoveSpeed_ << " m/s, dt = " << dt
            << " s, h = " << grid_.h() << " m): the run is unstable or deltaT is too large";
-        fail("G2P", fastestParticle(particles_), os.str());
+        fail("G2P", st.fastestMoving, os.str());
     }
     if (lastKinetic_ > energyBudget_) {
         std::ostringstream os;
@@ -709,13 +713,12 @@ template <int dim> void MpmSimulation<dim>::write() {
 template <int dim>
 void MpmSimulation<dim>::fail(const std::string& phase, Index particle, const std::string& what) {
     std::ostringstream os;
-    os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": ";
-    if (particle >= 0)
-        os << (comm_.size() > 1 ? "rank " + std::to_string(comm_.rank()) + ": " : "") << "particle "
-           << particles_.id[particle] << " at (" << particles_.x[particle].transpose() << ") ";
-    os << what << '.';
-    if (particle >= static_cast<Index>(particles_.size())) particle = -1;
-    if (!options_.dryRun && good_.restore(particles_, bodies_, *time_)) {
+    os << "step " << time_->index() << " (t = " << time_->value() << " s), phase " << phase << ": "
+       << describePoint(particles_, particle, comm_.size() > 1 ? comm_.rank() : -1) << what << '.';
+    SolverState solver;
+    if (!options_.dryRun && good_.restore(particles_, bodies_, *time_, solver)) {
+        accelerationWork_ = solver.accelerationWork; // what the written time directory holds
+        if (wallContactIsState()) bc_.setWallContact(solver.wallContact);
         write();
         os << "\nThe last good state (step " << time_->index() << ", t = " << time_->value()
            << " s) is written to " << time_->name() << "/.";

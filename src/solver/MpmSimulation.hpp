@@ -60,19 +60,15 @@ public:
     void readTime(Time& time, const std::string& from);
     /// What function objects read (collective in a parallel run: its minima and sums).
     State<dim> state() const {
-        return {particles_,
-                grid_,
-                materials_,
-                gravity_,
-                reactions_,
-                bodies_.bodies(),
-                comm_.min(coupling_ ? coupling_->minimumGapSeen() : 1e300),
-                comm_.sum(coupling_ ? coupling_->numContacts() : Index(0)),
-                time_->value(),
-                *acceleration_,
-                accelerationWork_,
-                comm_.min(coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300),
-                comm_};
+        State<dim> s(particles_, grid_, materials_, gravity_, reactions_, bodies_.bodies(),
+                     *acceleration_, comm_);
+        s.minimumGap = comm_.min(coupling_ ? coupling_->minimumGapSeen() : 1e300);
+        s.contacts = comm_.sum(coupling_ ? coupling_->numContacts() : Index(0));
+        s.time = time_->value();
+        s.accelerationWork = accelerationWork_;
+        s.minimumGapBeforeProjection =
+            comm_.min(coupling_ ? coupling_->minimumGapBeforeProjection() : 1e300);
+        return s;
     }
 
 private:
@@ -147,7 +143,12 @@ private:
                 const std::string& what);
 
     // Failure handling: keep a recent good state and write it before stopping.
-    void snapshot() { good_.save(particles_, bodies_, *time_); }
+    void snapshot() {
+        good_.save(particles_, bodies_, *time_,
+                   {accelerationWork_, wallContactIsState()
+                                           ? bc_.wallContact()
+                                           : std::vector<std::pair<Index, int>>{}});
+    }
     [[noreturn]] void fail(const std::string& phase, Index particle, const std::string& what);
 
     const Case& case_;

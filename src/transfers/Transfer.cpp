@@ -454,10 +454,14 @@ private:
         const double invH = g.invH();
         const double eta = ratio_;
         double vmax2 = 0.0, move2 = 0.0, ke = 0.0;
-        Index bad = n;
-#pragma omp parallel if(worthThreads(n)) reduction(max : vmax2, move2) reduction(+ : ke) \
+        Index bad = n, mover = -1;
+#pragma omp parallel if(worthThreads(n)) reduction(max : vmax2) reduction(+ : ke) \
     reduction(min : bad)
         {
+            // The fastest-moving point: each thread's first of its fastest, then the fastest of
+            // those, the lowest index of equals (the same point on any number of threads).
+            double myMove2 = 0.0;
+            Index myMover = -1;
 #pragma omp for schedule(static) nowait
             for (Index i = 0; i < n; ++i) {
                 const Stencil& s = st_[i];
@@ -476,17 +480,26 @@ private:
                 if constexpr (Grad) streamValue(p.L[i], Mat<dim>(L * invH));
                 const Vec<dim> x = p.x[i] + dt * vPic;
                 p.x[i] = x;
-                move2 = std::max(move2, vPic.squaredNorm());
+                if (const double m2 = vPic.squaredNorm(); m2 > myMove2) {
+                    myMove2 = m2;
+                    myMover = i;
+                }
                 const double v2 = v.squaredNorm();
                 if (!std::isfinite(v2) || !std::isfinite(x.sum())) bad = std::min(bad, i);
                 vmax2 = std::max(vmax2, v2);
                 ke += 0.5 * p.mass[i] * v2;
             }
             sfence(); // C and L streamed
+#pragma omp critical(fastestMoving)
+            if (myMove2 > move2 || (myMove2 == move2 && myMover >= 0 && myMover < mover)) {
+                move2 = myMove2;
+                mover = myMover;
+            }
         }
         GatherStats st;
         st.maxSpeed = std::sqrt(vmax2);
         st.maxMoveSpeed = std::sqrt(move2);
+        st.fastestMoving = mover;
         st.kineticEnergy = ke;
         st.firstNonFinite = bad < n ? bad : -1;
         return st;

@@ -12,11 +12,13 @@
 namespace mpm {
 
 /// What G2P saw: the largest particle speed, the largest speed a particle moved with (the grid
-/// velocity, [000 Eq. 16]), the kinetic energy, and the first particle whose velocity is not
-/// finite (-1 if none).
+/// velocity, [000 Eq. 16]: its displacement over Δt) and that particle (the first of equals; -1
+/// if none moved), the kinetic energy, and the first particle whose velocity is not finite (-1 if
+/// none).
 struct GatherStats {
     double maxSpeed = 0;
     double maxMoveSpeed = 0;
+    Index fastestMoving = -1;
     double kineticEnergy = 0;
     Index firstNonFinite = -1;
 };

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/Coupling.hpp"
+#include "core/Constants.hpp"
 
 #include "TestSupport.hpp"
 #include "levelset/LevelSetFile.hpp"
@@ -18,7 +19,6 @@
 namespace mpm {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double H = 0.05; // MPM cell size [m]
 
 template <int dim> Grid<dim> unitGrid() {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/SdemContact.hpp"
+#include "contact/ContactForce.hpp"
 #include "grid/Grid.hpp"
 #include "rigid/SphereShape.hpp"
 
@@ -326,12 +327,36 @@ TEST(SdemContactTest, StableStepIsEq51) {
     b.push_back(body("{shape: {type: disk, radius: 0.1}, mass: 1.5, position: [2, 0]}"));
     auto l = sdem("kn: 2e4");
     EXPECT_NEAR(l->stableDeltaT(b), 0.1 * 2 * M_PI * std::sqrt(0.5 / 2e4), 1e-15);
-    // Dashpot: c = −2 ln e √(m k_n)/√(π² + ln² e).
+    // Dashpot: c = 2 ζ √(m k_n), ζ the exact restitution's damping ratio.
     auto d = sdem("kn: 2e4, restitution: 0.5");
-    const double le = std::log(0.5);
-    EXPECT_NEAR(d->dashpot(0.3), -2 * le * std::sqrt(0.3 * 2e4) / std::sqrt(M_PI * M_PI + le * le),
+    EXPECT_NEAR(d->dashpot(0.3), 2 * RestitutionDashpot(0.5).dampingRatio() * std::sqrt(0.3 * 2e4),
                 1e-12);
     EXPECT_EQ(l->dashpot(0.3), 0.0);
+}
+
+/// Relative separation speed over approach speed of a head-on collision: a disk (one vertex)
+/// hits the middle of a free square's face, one vertex–edge contact, without friction.
+double headOnRestitution(const std::string& keys) {
+    Bodies b;
+    b.push_back(body("{shape: {type: disk, radius: 0.05}, density: 1000, position: [0, 0], "
+                     "velocity: [1, 0]}"));
+    b.push_back(body("{shape: " + square(0.2, 0.02, 0, 0) +
+                     ", density: 500, position: [0.171, 0], velocity: [-0.5, 0]}"));
+    auto l = sdem("kn: 1e5" + keys);
+    ContactHistory<2> h;
+    const double approach = b[0]->velocity()[0] - b[1]->velocity()[0];
+    const double dt = 1e-5;
+    for (int k = 0; k * dt < 0.06; ++k)
+        step(b, *l, h, dt, k * dt);
+    EXPECT_TRUE(h.empty()); // apart
+    EXPECT_LT(std::fabs(b[1]->angularVelocity()[2]), 1e-12);
+    return (b[1]->velocity()[0] - b[0]->velocity()[0]) / approach;
+}
+
+TEST(SdemContactTest, HeadOnCollisionLeavesAtTheRestitutionAsked) {
+    EXPECT_NEAR(headOnRestitution(""), 1.0, 2e-3);
+    for (const double e : {0.9, 0.5, 0.3, 0.2, 0.14})
+        EXPECT_NEAR(headOnRestitution(", restitution: " + std::to_string(e)), e, 3e-3) << e;
 }
 
 TEST(SdemContactTest, PeriodicPairMeetsThroughTheMinimumImage) {
@@ -386,6 +411,8 @@ TEST(SdemContactTest, BadInputIsAClearError) {
     EXPECT_NE(errorOf("{type: sdem, kn: -1}", 2).find("kn"), std::string::npos);
     EXPECT_NE(errorOf("{type: sdem, kn: 1, restitution: 0}", 2).find("restitution"),
               std::string::npos);
+    EXPECT_NE(errorOf("{type: sdem, kn: 1, restitution: 0.1}", 2).find("restitution"),
+              std::string::npos); // below what the cut dashpot reaches
     EXPECT_NE(errorOf("{type: sdem, kn: 1, verletDistance: 0}", 2).find("verletDistance"),
               std::string::npos);
     EXPECT_NE(errorOf("{type: sdem, kn: 1, normalStiffness: 1}", 2).find("normalStiffness"),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Body accelerations of constant/g: values against closed forms, smoothness, bounds, errors.
 #include "forces/BodyAcceleration.hpp"
+#include "core/Constants.hpp"
 
 #include "TestSupport.hpp"
 
@@ -14,7 +15,6 @@
 namespace mpm {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 using test::catchInputError;
 
 /// A number as YAML reads it back exactly (17 significant digits).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "TestMeshes.hpp"
 #include "TestSupport.hpp"
+#include "core/Constants.hpp"
 
 #include "levelset/LevelSetFile.hpp"
 #include "levelset/MassProperties.hpp"
@@ -27,8 +28,6 @@ using namespace mpm;
 using namespace mpm::levelset;
 using namespace mpm::levelset::test;
 namespace fs = std::filesystem;
-
-constexpr double pi = 3.14159265358979323846;
 
 /// Uniform random points in the shell r0 ≤ |x| ≤ r1 (fixed seed).
 std::vector<Vec3> shellPoints(double r0, double r1, int n, unsigned seed) {

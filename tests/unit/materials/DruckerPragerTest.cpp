@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Drucker–Prager on Hencky elasticity: return map in principal logarithmic strain, apex,
-// trans-phase gasification, input checks; fastExp.
+// trans-phase gasification, input checks.
 #include "materials/DruckerPrager.hpp"
 #include "TestSupport.hpp"
+#include "core/Constants.hpp"
 #include "materials/HenckyElastic.hpp"
 #include "materials/Material.hpp"
 
@@ -20,7 +21,6 @@
 namespace mpm {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 const double sqrt2 = std::sqrt(2.0);
 
 Dictionary parse(const std::string& text) {
@@ -82,21 +82,6 @@ std::vector<Index> allIds(std::size_t n) {
 
 // ---------------------------------------------------------------------------------------------
 // Helpers
-
-TEST(FastExp, MatchesStdExp) {
-    std::mt19937_64 rng(1);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    double worst = 0;
-    for (int k = 0; k < 100000; ++k) {
-        const double x = k % 2 ? 0.2 * u(rng) : 60.0 * u(rng);
-        worst = std::max(worst, std::fabs(fastExp(x) / std::exp(x) - 1.0));
-    }
-    EXPECT_LE(worst, 5e-16);
-    EXPECT_EQ(fastExp(0.0), 1.0);
-    EXPECT_NEAR(fastExp(-700.0) / std::exp(-700.0), 1.0, 1e-14);
-    EXPECT_NEAR(fastExp(690.0) / std::exp(690.0), 1.0, 1e-14);
-    EXPECT_EQ(fastExp(-1e9), fastExp(-700.0)); // clamped
-}
 
 TEST(DruckerPrager, FrictionCoefficientEq8) {
     // φ = 30°: μ = 2√3 · ½ / (3 − ½) = 2√3/5.

@@ -2,6 +2,7 @@
 // Elastic constants, Hencky hyperelasticity, Jaumann linear elasticity and material selection.
 #include "materials/HenckyElastic.hpp"
 #include "TestSupport.hpp"
+#include "core/Constants.hpp"
 #include "materials/LinearElastic.hpp"
 #include "materials/Material.hpp"
 
@@ -19,8 +20,6 @@
 
 namespace mpm {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 Dictionary parse(const std::string& text) {
     return Dictionary::fromString(text, "constant/materials");

@@ -3,6 +3,7 @@
 // elasticity: hypoelastic), hypoelastic μ(I), and the composition factory (ElastoPlastic).
 #include "materials/HypoelasticReturnMap.hpp"
 #include "TestSupport.hpp"
+#include "core/Constants.hpp"
 #include "materials/DruckerPrager.hpp"
 #include "materials/HenckyElastic.hpp"
 #include "materials/LinearElastic.hpp"
@@ -18,8 +19,6 @@
 
 namespace mpm {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 using test::catchInputError;
 using test::invariants;

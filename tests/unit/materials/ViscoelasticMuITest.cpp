@@ -5,6 +5,7 @@
 #include "materials/ViscoelasticMuI.hpp"
 #include "MaterialTestSupport.hpp"
 #include "TestSupport.hpp"
+#include "core/Constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +21,6 @@ namespace {
 using test::allIndices;
 using test::catchInputError;
 using test::restingParticles;
-
-const double pi = 3.14159265358979323846;
 
 /// Glass G1 of [002 §4]: E = 20 MPa, ν = 0.3, ρ_s = 2500, d = 1 mm, φ₀ = 0.59, μ_s = tan 21°,
 /// μ₂ = tan 33°, I₀ = 0.3.

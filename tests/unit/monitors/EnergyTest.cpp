@@ -63,8 +63,9 @@ protected:
         const Case cs(dir_);
         const Time time(cs);
         const Vec<2> gravity = g.at(time.value());
-        const State<2> s{p_,    grid_, materials_,   gravity, reactions_, bodies_,
-                         1e300, 0,     time.value(), g,       work,       1e300};
+        State<2> s(p_, grid_, materials_, gravity, reactions_, bodies_, g);
+        s.time = time.value();
+        s.accelerationWork = work;
         auto f = FunctionObjectRegistry<2>::create(
             Dictionary::fromString("type: energy\n", "system/controlDict"), "energy");
         f->prepare(s, time);

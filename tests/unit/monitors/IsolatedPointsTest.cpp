@@ -43,8 +43,8 @@ protected:
         const auto g = BodyAcceleration<2>::create(
             Dictionary::fromString("value: [0, -9.81]\n", "constant/g"));
         const Vec<2> gravity(0, -9.81);
-        const State<2> s{p,     grid_, materials_,   gravity, reactions_, bodies_,
-                         1e300, 0,     time.value(), *g,      0.0,        1e300};
+        State<2> s(p, grid_, materials_, gravity, reactions_, bodies_, *g);
+        s.time = time.value();
         auto f = FunctionObjectRegistry<2>::create(
             Dictionary::fromString("type: isolatedPoints\n" + extra, "system/controlDict"), "gas");
         f->prepare(s, time);

@@ -81,8 +81,9 @@ public:
 
 private:
     State<dim> state(double t) const {
-        return State<dim>{p,     grid_, materials_, gravity_, reactions_, bodies_,
-                          1e300, 0,     t,          *g_,      0.0,        1e300};
+        State<dim> s(p, grid_, materials_, gravity_, reactions_, bodies_, *g_);
+        s.time = t;
+        return s;
     }
 
     fs::path dir_;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/Region.hpp"
+#include "core/Constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +9,6 @@
 
 namespace mpm {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 template <int dim> std::unique_ptr<Region<dim>> makeRegion(const std::string& yaml) {
     return Region<dim>::create(Dictionary::fromString(yaml, "test"));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/LevelSetShape.hpp"
+#include "core/Constants.hpp"
 
 #include "core/Error.hpp"
 #include "levelset/LevelSetFile.hpp"
@@ -18,7 +19,6 @@
 namespace mpm {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double radius = 0.3;
 
 namespace fs = std::filesystem;

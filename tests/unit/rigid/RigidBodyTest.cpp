@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/RigidBody.hpp"
+#include "core/Constants.hpp"
 #include "rigid/RigidBodyOutput.hpp"
 
 #include "TestSupport.hpp"
@@ -22,7 +23,6 @@
 namespace mpm {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 namespace fs = std::filesystem;
 
 template <int dim>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/Shape.hpp"
+#include "core/Constants.hpp"
 #include "rigid/BoxShape.hpp"
 #include "rigid/SphereShape.hpp"
 
@@ -10,8 +11,6 @@
 
 namespace mpm {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 template <int dim> std::unique_ptr<Shape<dim>> makeShape(const std::string& yaml) {
     return Shape<dim>::create(Dictionary::fromString(yaml, "test"));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/SpheropolygonShape.hpp"
+#include "core/Constants.hpp"
 #include "rigid/BoxShape.hpp"
 #include "rigid/RigidBody.hpp"
 #include "rigid/SphereShape.hpp"
@@ -14,8 +15,6 @@
 
 namespace mpm {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 std::unique_ptr<Shape<2>> make2(const std::string& yaml) {
     return Shape<2>::create(Dictionary::fromString(yaml, "rigidBodies"));

@@ -3,7 +3,9 @@
 
 #include "TestSupport.hpp"
 
+#include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -80,6 +82,103 @@ TEST(MpmSimulation, StepsConserveMassAndMomentumWithoutExternalForce) {
             expectConserved<2>(s);
             expectConserved<3>(s);
         }
+}
+
+std::string readText(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// An elastic block sliding fast along a slip floor, pressed onto it, under a g that ramps up
+/// (time-varying: its work is restart state), USF (the walls' contact is restart state).
+void writeFallingBlock(const std::filesystem::path& dir) {
+    writeFile(dir / "system/controlDict", "endTime: 1\ndeltaT: 1e-4\nwriteInterval: 1\n");
+    writeFile(dir / "system/mpmSchemes", "kernel: linear\ntransfer: {type: flip, ratio: 1.0}\n"
+                                         "stressUpdate: USF\n");
+    writeFile(dir / "constant/grid", "dimension: 2\ncellSize: 0.05\nbounds: {min: [0, 0], "
+                                     "max: [1, 1]}\nboundary: {yMin: slip}\n");
+    writeFile(dir / "constant/g", "type: ramp\nvalue: [0, -9.81]\nduration: 0.01\n");
+    writeFile(dir / "constant/materials",
+              "block: {type: henckyElastic, density: 1000, E: 1.0e6, nu: 0.3}\n");
+    writeFile(dir / "constant/particles", "block:\n  material: block\n  region: {type: box, "
+                                          "min: [0.3, 0.0], max: [0.7, 0.3]}\n"
+                                          "  velocity: [60, -1]\n");
+}
+
+TEST(MpmSimulation, FailureWritesTheLastGoodStateWithItsOwnWorkAndWallContact) {
+    test::TempDir tmp;
+    writeFallingBlock(tmp.path());
+    const Case cs(tmp.path());
+    Time time(cs);
+    const auto owner = Simulation::create(cs, RunOptions{false, true});
+    auto& sim = dynamic_cast<MpmSimulation<2>&>(*owner);
+    sim.start(time);
+    for (int k = 0; k < 20; ++k) { // the last good state is kept every 20th step
+        time.advance(sim.stableDeltaT());
+        sim.step(time.deltaT());
+    }
+    sim.write(); // what the good state's time directory holds written at that time
+    const std::filesystem::path good = tmp.path() / time.name() / "uniform";
+    const std::string work = readText(good / "accelerationWork");
+    const std::string contact = readText(good / "wallContact");
+    ASSERT_EQ(contact.find("nodes: []"), std::string::npos) << "the block rests on the floor";
+    for (int k = 0; k < 10; ++k) { // g changes, and the block slides 6 cm = 1.2 h on
+        time.advance(sim.stableDeltaT());
+        sim.step(time.deltaT());
+    }
+    sim.write();
+    const std::filesystem::path later = tmp.path() / time.name() / "uniform";
+    ASSERT_NE(readText(later / "accelerationWork"), work);
+    ASSERT_NE(readText(later / "wallContact"), contact);
+    time.advance(sim.stableDeltaT());
+    std::filesystem::remove_all(good.parent_path());
+    EXPECT_THROW(sim.step(10.0), RunError); // moves many cells: stops, writes the good state
+    EXPECT_EQ(readText(good / "accelerationWork"), work);
+    EXPECT_EQ(readText(good / "wallContact"), contact);
+}
+
+TEST(MpmSimulation, MovedMoreThanOneCellTestsTheDisplacementNotTheFlipVelocity) {
+    // Two coincident point sets moving at ±V: the grid velocity is 0, so with FLIP the points
+    // keep |v| = V but do not move. A step with V Δt = 4 h must not stop; a set moving at V
+    // must.
+    const auto run = [](bool opposed) {
+        test::TempDir tmp;
+        writeFile(tmp.path() / "system/controlDict", "endTime: 1\ndeltaT: 1e-4\n"
+                                                     "writeInterval: 1\n");
+        writeFile(tmp.path() / "system/mpmSchemes",
+                  "kernel: linear\ntransfer: {type: flip, ratio: 1.0}\nstressUpdate: USL\n");
+        writeFile(tmp.path() / "constant/grid",
+                  "dimension: 2\ncellSize: 0.05\nbounds: {min: [0, 0], max: [1, 1]}\n");
+        writeFile(tmp.path() / "constant/materials",
+                  "block: {type: henckyElastic, density: 1000, E: 1.0e6, nu: 0.3}\n");
+        const std::string region = "  material: block\n  region: {type: box, min: [0.4, 0.4], "
+                                   "max: [0.6, 0.6]}\n";
+        writeFile(tmp.path() / "constant/particles",
+                  "right:\n" + region + "  velocity: [2, 0]\n" +
+                      (opposed ? "left:\n" + region + "  velocity: [-2, 0]\n" : std::string()));
+        const Case cs(tmp.path());
+        Time time(cs);
+        const auto owner = Simulation::create(cs, RunOptions{true, true});
+        auto& sim = dynamic_cast<MpmSimulation<2>&>(*owner);
+        sim.start(time);
+        time.advance(sim.stableDeltaT());
+        try {
+            sim.step(0.1); // |v| Δt = 0.2 m = 4 h
+        } catch (const RunError& e) {
+            return std::string(e.what());
+        }
+        double moved = 0;
+        for (const auto& x : sim.particles().x)
+            moved = std::max(moved, std::fabs(x[0] - 0.5));
+        EXPECT_LT(moved, 0.1 + 1e-9); // no point left the block's span
+        return std::string();
+    };
+    EXPECT_EQ(run(true), "");
+    const std::string stopped = run(false);
+    EXPECT_NE(stopped.find("moved more than one cell"), std::string::npos) << stopped;
+    EXPECT_NE(stopped.find("particle "), std::string::npos) << stopped;
 }
 
 } // namespace
