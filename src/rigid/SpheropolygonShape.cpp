@@ -229,7 +229,8 @@ MPM_SCHEMA("shapes", "spheropolygon",
               "1: disk, 2: capsule, ≥ 3: convex polygon, counter-clockwise"},
              {"radius", "scalar", "m", "required",
               "sphero-radius a ≥ 0 (> 0 with fewer than 3 vertices)"}},
-            "{type: spheropolygon, vertices: [[0, 0], [0.02, 0], [0, 0.02]], radius: 0.001}"});
+            "{type: spheropolygon, vertices: [[0, 0], [0.02, 0], [0, 0.02]], radius: 0.001}",
+            2});
 
 namespace {
 const ShapeRegistry<3>::Add
