@@ -53,7 +53,6 @@ template <int dim> Index ParticleSplitting<dim>::apply(Particles<dim>& p, const 
     }
     // The children's ids: the largest id + 1 on, in rank order, then index order.
     Index before = 0, total = count;
-    Index maxId = n > 0 ? *std::max_element(p.id.begin(), p.id.end()) : -1;
     if (comm.parallel()) {
         const std::vector<Index> counts = comm.gather(count);
         total = 0;
@@ -61,11 +60,12 @@ template <int dim> Index ParticleSplitting<dim>::apply(Particles<dim>& p, const 
             if (r < comm.rank()) before += counts[static_cast<std::size_t>(r)];
             total += counts[static_cast<std::size_t>(r)];
         }
-        if (total == 0) return 0;
+    }
+    if (total == 0) return 0; // the same on every rank: no rank waits below
+    Index maxId = n > 0 ? *std::max_element(p.id.begin(), p.id.end()) : -1;
+    if (comm.parallel())
         for (const Index m : comm.gather(maxId))
             maxId = std::max(maxId, m);
-    }
-    if (total == 0) return 0;
     std::vector<Index> parents;
     parents.reserve(static_cast<std::size_t>(count));
     for (Index i = 0; i < n; ++i)
