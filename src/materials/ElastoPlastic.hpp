@@ -47,7 +47,8 @@ struct NoPlasticity {
 
 /// A material of elastic law `Law` and plasticity `Plasticity` (see above).
 /// Keys: density, E, nu, the plasticity's keys and, for plastic materials, transPhase (default
-/// true) and criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]).
+/// true), criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]) and
+/// gasVolume (point | neighbourhood, default point: TransPhaseRule::relaxGasVolumes).
 template <int dim, class Law, class Plasticity> class ElastoPlastic : public Material<dim> {
 public:
     ElastoPlastic(const Dictionary& dict, const std::string& name)
@@ -57,6 +58,8 @@ public:
             const double rhoC =
                 dict.getScalarOr("criticalDensity", this->density(), Bounds::nonNegative());
             rhoC_ = transPhase ? rhoC : 0.0;
+            gasVolumeFromNeighbourhood_ =
+                dict.getWordOr("gasVolume", "point", {"point", "neighbourhood"}) == "neighbourhood";
         }
     }
 
@@ -78,7 +81,10 @@ public:
             phase.density = p.scalar(f->density).data();
             phase.gasified = p.flag(f->gasified).data();
         }
-        return Law::update(p, ids, dt, c_, phase, plasticity_.flow(dt), plasticity_.cutoff());
+        const Index bad =
+            Law::update(p, ids, dt, c_, phase, plasticity_.flow(dt), plasticity_.cutoff());
+        if (gasVolumeFromNeighbourhood_) phase.relaxGasVolumes(p, ids);
+        return bad;
     }
     double defaultK0() const override { return plasticity_.defaultK0(c_); }
     double strainEnergy(const Particles<dim>& p, Index i) const override {
@@ -100,7 +106,10 @@ public:
         if constexpr (Plasticity::plastic) {
             os << "    K0 of a geostatic initial stress (1 - sin phi) = " << defaultK0() << '\n';
             if (rhoC_ > 0.0)
-                os << "    trans-phase: critical density " << rhoC_ << " kg/m3\n";
+                os << "    trans-phase: critical density " << rhoC_ << " kg/m3, gasified volume "
+                   << (gasVolumeFromNeighbourhood_ ? "from the neighbourhood's density"
+                                                   : "kept by each point")
+                   << '\n';
             else
                 os << "    trans-phase: off\n";
         }
@@ -116,7 +125,8 @@ public:
 private:
     ElasticConstants c_;
     Plasticity plasticity_;
-    double rhoC_ = 0.0; ///< ρ_c [kg/m³] in use (0: trans-phase off)
+    double rhoC_ = 0.0;                       ///< ρ_c [kg/m³] in use (0: trans-phase off)
+    bool gasVolumeFromNeighbourhood_ = false; ///< `gasVolume: neighbourhood`
 };
 
 /// The factory of a plastic `type:`: reads `elasticity: hencky | hypoelastic` (default

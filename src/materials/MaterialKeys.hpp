@@ -20,7 +20,10 @@ inline KeyList granularKeys() {
              "how angles give the cone's coefficients: planeStrain or compression"},
             {"transPhase", "bool", "-", "true", "trans-phase gasification [000 Eq. 10] on/off"},
             {"criticalDensity", "scalar", "kg/m³", "density",
-             "ρ_c (≥ 0): a point whose neighbourhood density is below it is gasified"}};
+             "ρ_c (≥ 0): a point whose neighbourhood density is below it is gasified"},
+            {"gasVolume", "word", "-", "point",
+             "a gasified point's volume: point (its own) or neighbourhood (m_p/ρ̄_p: resting "
+             "deposits carry their weight)"}};
 }
 
 } // namespace mpm

@@ -495,6 +495,43 @@ TEST(DruckerPrager, GasifiedPointsCarryNoStress) {
     EXPECT_EQ(p.stress[0], Mat3::Zero());
 }
 
+TEST(DruckerPrager, GasVolumeNeighbourhoodTakesTheNeighbourhoodsDensity) {
+    // ρ̄_p (the `phaseDensity` field) of 1400 and 1590 kg/m³ gasify points 0 and 1 (ρ_c = 1600);
+    // 1600 and 1700 keep points 2 and 3 dense. Own volumes differ from m_p/ρ̄_p on purpose.
+    const double rhoBar[4] = {1400.0, 1590.0, 1600.0, 1700.0};
+    const auto run = [&](const std::string& extra) {
+        Particles<3> p = makeParticles<3>(4);
+        const auto m = create<3>(extra);
+        m->declareState(p);
+        const TransPhaseFields f = transPhaseFields(p);
+        for (int i = 0; i < 4; ++i) {
+            p.scalar(f.density)[i] = rhoBar[i];
+            p.volume[i] = 1e-3 * (0.97 + 0.02 * i);
+            p.F[i] = std::cbrt(p.volume[i] / p.volume0[i]) * Mat<3>::Identity();
+        }
+        EXPECT_EQ(m->updateStress(p, allIds(4), 1e-4), -1);
+        EXPECT_EQ(p.flag(f.gasified)[0] + p.flag(f.gasified)[1], 2);
+        EXPECT_EQ(p.flag(f.gasified)[2] + p.flag(f.gasified)[3], 0);
+        return p;
+    };
+    const Particles<3> n = run("gasVolume: neighbourhood\n");
+    for (int i = 0; i < 2; ++i) { // gasified: V = m/ρ̄, V = det F V⁰, no stress
+        EXPECT_NEAR(n.volume[i], n.mass[i] / rhoBar[i], 1e-15) << i;
+        EXPECT_NEAR(n.F[i].determinant() * n.volume0[i], n.volume[i], 1e-15) << i;
+        EXPECT_EQ(n.stress[i], Mat3::Zero()) << i;
+    }
+    for (int i = 2; i < 4; ++i) // dense: untouched
+        EXPECT_EQ(n.volume[i], 1e-3 * (0.97 + 0.02 * i)) << i;
+    const Particles<3> o = run(""); // the default, `point`: every volume kept
+    for (int i = 0; i < 4; ++i)
+        EXPECT_EQ(o.volume[i], 1e-3 * (0.97 + 0.02 * i)) << i;
+    EXPECT_NE(create<3>("gasVolume: neighbourhood\n")
+                  ->describe()
+                  .find("gasified volume from the neighbourhood's density"),
+              std::string::npos);
+    EXPECT_EQ(catchInputError([] { create<3>("gasVolume: grains\n"); }).key(), "gasVolume");
+}
+
 TEST(DruckerPrager, BatchResultsDoNotDependOnNeighbours) {
     // Elastic, plastic, tensile and gasified points mixed in batches give what each gives alone.
     const auto m = create<3>("dilationAngle: 5\n");
