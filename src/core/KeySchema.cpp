@@ -69,8 +69,8 @@ std::vector<std::string> names(const ModelCatalogue::Lister& list) {
     return list ? list() : std::vector<std::string>{};
 }
 
-bool contains(const std::vector<std::string>& names, const std::string& name) {
-    return std::find(names.begin(), names.end(), name) != names.end();
+bool contains(const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
 }
 
 } // namespace

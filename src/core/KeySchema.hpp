@@ -33,7 +33,7 @@ struct TypeSchema {
     std::string example; ///< a minimal valid dictionary, YAML flow style ("{type: box, …}")
     /// What to use instead where the type is refused (a type of one dimension, registered with
     /// MPM_REGISTER_ONLY); it follows the generated "'x' is 3D only (this case is 2D)".
-    std::string hint;
+    std::string hint = {};
 };
 
 /// What every type of a family shares.

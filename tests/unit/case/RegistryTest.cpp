@@ -24,7 +24,6 @@ template <int dim> struct Part {
     explicit Part(const Dictionary& d) { d.getScalarOr("a", 0.0); }
     virtual ~Part() = default;
 };
-template <int dim> struct Other : Part<dim> { using Part<dim>::Part; };
 template <int dim> using PartRegistry = Registry<Part<dim>>;
 
 MPM_FAMILY_INFO("testParts", {"nowhere", "99. tests", {{"type", "word", "-", "required", "-"}}});
