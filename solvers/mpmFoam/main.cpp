@@ -34,6 +34,7 @@ int main(int argc, char* argv[]) {
         "stop.\nA file named 'stop' in the case directory also writes and stops.");
     if (app.has("-list")) { // the model catalogue (core/KeySchema.hpp), without the banner
         const int rc = !comm.master() ? 0 : reportingErrors([&] {
+            ModelCatalogue::check();
             ModelCatalogue::list(std::cout, app.value("-list"));
             return 0;
         });
@@ -42,6 +43,7 @@ int main(int argc, char* argv[]) {
     if (PostProcess::requested(app)) // the function objects on the written times, no stepping
         return comm.finish(app.run([&] { PostProcess(app, comm).run(); }));
     const int rc = app.run([&] {
+        ModelCatalogue::check(); // the registrations: no name twice, dimensions declared
         const Case root(app.caseDir());
         const Case cs = comm.parallel() ? root.processor(comm.rank()) : root;
         Time time(cs);

@@ -5,7 +5,7 @@ namespace mpm {
 
 template <int dim>
 std::unique_ptr<BoundaryCondition<dim>> BoundaryCondition<dim>::create(const Dictionary& dict) {
-    return BoundaryConditionRegistry<dim>::create(dict);
+    return BoundaryConditionRegistry<dim>::createReadingMore(dict); // and the patch keys
 }
 
 template <int dim> std::vector<std::string> BoundaryCondition<dim>::typeNames() {

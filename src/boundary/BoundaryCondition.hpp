@@ -2,7 +2,7 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
-#include "core/Registry.hpp"
+#include "case/Registry.hpp"
 #include "core/Types.hpp"
 #include "grid/NodeArray.hpp"
 
@@ -69,7 +69,8 @@ public:
     /// The face is one side of a periodic pair (no constraint; the lattice is folded instead).
     virtual bool periodic() const { return false; }
 
-    /// Build the condition named by `dict`'s `type:`.
+    /// Build the condition named by `dict`'s `type:`; the caller reads the patch keys (box,
+    /// from, until) of the same map and then checks its keys (BoundaryConditions::readPatch).
     static std::unique_ptr<BoundaryCondition> create(const Dictionary& dict);
     /// Names of the registered conditions, sorted.
     static std::vector<std::string> typeNames();

@@ -3,8 +3,7 @@
 
 namespace mpm {
 
-MPM_REGISTER(BoundaryConditionRegistry<2>, Friction<2>, "friction");
-MPM_REGISTER(BoundaryConditionRegistry<3>, Friction<3>, "friction");
+MPM_REGISTER_DIMS(BoundaryConditionRegistry, Friction, "friction");
 MPM_SCHEMA("boundaryConditions", "friction",
            {"as slip, with Coulomb friction on the tangential velocity",
             {{"friction", "scalar", "-", "required", "Coulomb coefficient μ (≥ 0)"}},

@@ -3,8 +3,7 @@
 
 namespace mpm {
 
-MPM_REGISTER(BoundaryConditionRegistry<2>, NoSlip<2>, "noSlip");
-MPM_REGISTER(BoundaryConditionRegistry<3>, NoSlip<3>, "noSlip");
+MPM_REGISTER_DIMS(BoundaryConditionRegistry, NoSlip, "noSlip");
 MPM_SCHEMA("boundaryConditions", "noSlip", {"fixed rough wall: v = 0", {}, "{type: noSlip}"});
 
 } // namespace mpm

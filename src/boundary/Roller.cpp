@@ -3,8 +3,7 @@
 
 namespace mpm {
 
-MPM_REGISTER(BoundaryConditionRegistry<2>, Roller<2>, "roller");
-MPM_REGISTER(BoundaryConditionRegistry<3>, Roller<3>, "roller");
+MPM_REGISTER_DIMS(BoundaryConditionRegistry, Roller, "roller");
 MPM_SCHEMA("boundaryConditions", "roller",
            {"fixed smooth wall the material can neither enter nor leave (a symmetry plane)",
             {},

@@ -3,8 +3,7 @@
 
 namespace mpm {
 
-MPM_REGISTER(BoundaryConditionRegistry<2>, Slip<2>, "slip");
-MPM_REGISTER(BoundaryConditionRegistry<3>, Slip<3>, "slip");
+MPM_REGISTER_DIMS(BoundaryConditionRegistry, Slip, "slip");
 MPM_SCHEMA("boundaryConditions", "slip",
            {"fixed smooth wall: the velocity into the wall is removed; material may separate",
             {},

@@ -42,8 +42,7 @@ template <int dim> Vec<dim> Velocity<dim>::wallVelocity(double t) const {
 template class Velocity<2>;
 template class Velocity<3>;
 
-MPM_REGISTER(BoundaryConditionRegistry<2>, Velocity<2>, "velocity");
-MPM_REGISTER(BoundaryConditionRegistry<3>, Velocity<3>, "velocity");
+MPM_REGISTER_DIMS(BoundaryConditionRegistry, Velocity, "velocity");
 MPM_SCHEMA("boundaryConditions", "velocity",
            {"wall moving with velocity w(t): a shear lid, a conveyor, an inflow",
             {{"value", "vector", "m/s", "none", "constant w (give value or table)"},

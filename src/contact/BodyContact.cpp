@@ -196,8 +196,7 @@ private:
 
 } // namespace
 
-MPM_REGISTER(BodyContactRegistry<2>, LinearSpringContact<2>, "linearSpring");
-MPM_REGISTER(BodyContactRegistry<3>, LinearSpringContact<3>, "linearSpring");
+MPM_REGISTER_DIMS(BodyContactRegistry, LinearSpringContact, "linearSpring");
 MPM_SCHEMA("bodyContact", "linearSpring",
            {"linear springs with friction and restitution, any shapes",
             {{"normalStiffness", "scalar", "N/m (per metre in 2D)", "required", "k_n (> 0)"},

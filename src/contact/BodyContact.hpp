@@ -3,7 +3,7 @@
 
 #include "boundary/PeriodicLattice.hpp"
 #include "case/Dictionary.hpp"
-#include "core/Registry.hpp"
+#include "case/Registry.hpp"
 #include "rigid/RigidBody.hpp"
 
 #include <array>

@@ -31,9 +31,7 @@ Vec<dim> CouplingLaw<dim>::frictionForce(const Contact<dim>& c, double fn, doubl
 
 template <int dim>
 std::unique_ptr<CouplingLaw<dim>> CouplingLaw<dim>::create(const Dictionary& dict, double h) {
-    auto law = CouplingLawRegistry<dim>::create(dict, h);
-    dict.checkUnknownKeys();
-    return law;
+    return CouplingLawRegistry<dim>::create(dict, h);
 }
 
 template class CouplingLaw<2>;
@@ -130,10 +128,8 @@ private:
 
 } // namespace
 
-MPM_REGISTER(CouplingLawRegistry<2>, BarrierCoupling<2>, "barrier");
-MPM_REGISTER(CouplingLawRegistry<3>, BarrierCoupling<3>, "barrier");
-MPM_REGISTER(CouplingLawRegistry<2>, LinearSpringCoupling<2>, "linearSpring");
-MPM_REGISTER(CouplingLawRegistry<3>, LinearSpringCoupling<3>, "linearSpring");
+MPM_REGISTER_DIMS(CouplingLawRegistry, BarrierCoupling, "barrier");
+MPM_REGISTER_DIMS(CouplingLawRegistry, LinearSpringCoupling, "linearSpring");
 MPM_SCHEMA("couplingLaws", "barrier",
            {"barrier potential: no point ends a step inside the body [000 Eq. 21-27]",
             {{"xiBar", "scalar", "-", "0.2",

@@ -156,7 +156,7 @@ void SdemContact::addForces(BodyList& bodies, ContactHistory<2>& history, double
     history.swap(next);
 }
 
-MPM_REGISTER(BodyContactRegistry<2>, SdemContact, "sdem");
+MPM_REGISTER_ONLY(2, BodyContactRegistry, SdemContact, "sdem");
 MPM_SCHEMA("bodyContact", "sdem",
            {"spheropolygon DEM, vertex-edge pairs [001 §3.2] (spheropolygons, boxes, disks)",
             {{"kn", "scalar", "N/m per metre", "required", "normal stiffness k_n (> 0)"},
@@ -164,14 +164,7 @@ MPM_SCHEMA("bodyContact", "sdem",
              {"friction", "scalar", "-", "0", "Coulomb μ (≥ 0)"},
              {"restitution", "scalar", "-", "1", "e in [0.14, 1]; 1: no dashpot"},
              {"verletDistance", "scalar", "m", "0.1 R_min", "neighbour-list margin V_d (> 0)"}},
-            "{type: sdem, kn: 6.0e6, kt: 3.0e5, friction: 0.2}"});
-
-namespace {
-const BodyContactRegistry<3>::Add
-    sdem3D("sdem", [](const Dictionary& d) -> std::unique_ptr<BodyContactLaw<3>> {
-        d.error("type", "'sdem' (spheropolygon DEM) is a 2D contact law; this case is 3D (use "
-                        "linearSpring)");
-    });
-} // namespace
+            "{type: sdem, kn: 6.0e6, kt: 3.0e5, friction: 0.2}",
+            "spheropolygon DEM is a 2D contact law: use linearSpring"});
 
 } // namespace mpm

@@ -9,9 +9,6 @@ namespace mpm {
 
 template <int dim>
 SdemCoupling<dim>::SdemCoupling(const Dictionary& dict, double h) : CouplingLaw<dim>(dict, h) {
-    if constexpr (dim != 2)
-        dict.error("type", "the sdem coupling is 2D only (seed 001): its tangential spring δ_t "
-                           "is a scalar along the in-plane tangent; use barrier or linearSpring");
     if (dict.has("slipThreshold"))
         dict.error("slipThreshold", "not a key of sdem: its friction is the k_t spring with the "
                                     "Coulomb cap μ k_n ξ, not the smoothed law");
@@ -52,10 +49,8 @@ template <int dim> double SdemCoupling<dim>::stableDeltaT(double m, double) cons
 }
 
 template class SdemCoupling<2>;
-template class SdemCoupling<3>;
 
-MPM_REGISTER(CouplingLawRegistry<2>, SdemCoupling<2>, "sdem");
-MPM_REGISTER(CouplingLawRegistry<3>, SdemCoupling<3>, "sdem");
+MPM_REGISTER_ONLY(2, CouplingLawRegistry, SdemCoupling<2>, "sdem");
 MPM_SCHEMA("couplingLaws", "sdem",
            {"spheropolygon DEM spring between points and bodies [001 Eq. 43-45]",
             {{"kn", "scalar", "N/m per metre", "required", "normal stiffness k_n (> 0)"},
@@ -65,6 +60,7 @@ MPM_SCHEMA("couplingLaws", "sdem",
               "the points' contact radius r_p (> 0)"},
              {"verletDistance", "scalar", "m", "0", "neighbour search margin V_d (≥ 0)"}},
             "{type: sdem, kn: 6.0e6, kt: 3.0e5, friction: 0.2}",
-            2});
+            "its tangential spring δ_t is a scalar along the in-plane tangent (seed 001): use "
+            "barrier or linearSpring"});
 
 } // namespace mpm

@@ -22,10 +22,13 @@ ModelCatalogue::AddFamily::AddFamily(const std::string& name, FamilyInfo info) {
     f.info = std::move(info);
 }
 
-ModelCatalogue::AddTypes::AddTypes(const std::string& family, int dim, Lister list) {
+ModelCatalogue::AddTypes::AddTypes(const std::string& family, int dim, Lister list)
+    : AddTypes(family, dim, Registered{std::move(list), {}, {}}) {}
+
+ModelCatalogue::AddTypes::AddTypes(const std::string& family, int dim, Registered registry) {
     Family& f = table()[family];
     f.name = family;
-    f.listers.emplace_back(dim, std::move(list));
+    f.registries.emplace_back(dim, std::move(registry));
 }
 
 ModelCatalogue::AddSchema::AddSchema(const std::string& family, const std::string& type,
@@ -53,10 +56,80 @@ const ModelCatalogue::Family* ModelCatalogue::find(const std::string& name) {
 
 std::map<std::string, std::set<int>> ModelCatalogue::types(const Family& family) {
     std::map<std::string, std::set<int>> out;
-    for (const auto& [dim, list] : family.listers)
-        for (const std::string& type : list())
+    for (const auto& [dim, r] : family.registries)
+        for (const std::string& type : r.types())
             out[type].insert(dim);
     return out;
+}
+
+namespace {
+
+/// The names `list` gives (none for an empty Lister).
+std::vector<std::string> names(const ModelCatalogue::Lister& list) {
+    return list ? list() : std::vector<std::string>{};
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+} // namespace
+
+int ModelCatalogue::onlyDim(const Family& family, const std::string& type) {
+    for (const auto& [dim, r] : family.registries)
+        if (contains(names(r.refused), type))
+            for (const auto& [other, o] : family.registries)
+                if (other != dim && contains(names(o.types), type)) return other;
+    return 0;
+}
+
+std::string ModelCatalogue::refusal(const std::string& family, const std::string& type,
+                                    int onlyDim) {
+    std::string message = "'" + type + "' is " + std::to_string(onlyDim) + "D only (this case is " +
+                          std::to_string(5 - onlyDim) + "D)";
+    if (const Family* f = find(family))
+        if (const auto it = f->schemas.find(type);
+            it != f->schemas.end() && !it->second.hint.empty())
+            message += "; " + it->second.hint;
+    return message;
+}
+
+std::vector<std::string> ModelCatalogue::problems(const Family& family) {
+    std::vector<std::string> out;
+    const std::string where = "family '" + family.name + "': ";
+    for (const auto& [dim, r] : family.registries) {
+        const std::string d = std::to_string(dim) + "D";
+        for (const std::string& type : names(r.duplicates))
+            out.push_back(where + "'" + type + "' is registered twice in " + d);
+        for (const std::string& type : names(r.refused)) {
+            bool built = false;
+            for (const auto& [other, o] : family.registries)
+                built = built || (other != dim && contains(names(o.types), type));
+            if (!built)
+                out.push_back(where + "'" + type + "' is refused in " + d +
+                              " but no other dimension builds it");
+        }
+        for (const std::string& type : names(r.types))
+            for (const auto& [other, o] : family.registries)
+                if (other != dim && !contains(names(o.types), type) &&
+                    !contains(names(o.refused), type))
+                    out.push_back(where + "'" + type + "' is built in " + d + " but " +
+                                  std::to_string(other) +
+                                  "D neither builds nor refuses it (MPM_REGISTER_ONLY)");
+    }
+    for (const auto& [type, schema] : family.schemas)
+        if (!schema.hint.empty() && onlyDim(family, type) == 0)
+            out.push_back(where + "the schema of '" + type +
+                          "' has a hint but the type has no dimension restriction");
+    return out;
+}
+
+void ModelCatalogue::check() {
+    std::string all;
+    for (const auto& [name, f] : table())
+        for (const std::string& p : problems(f))
+            all += "\n    " + p;
+    if (!all.empty()) throw std::logic_error("internal error in the model registrations:" + all);
 }
 
 std::optional<KeyList> ModelCatalogue::keys(const std::string& family, const std::string& type) {
@@ -126,7 +199,8 @@ void listFamily(std::ostream& os, const ModelCatalogue::Family& f) {
             continue;
         }
         const TypeSchema& s = it->second;
-        os << "  " << type << " (" << dimensions(dims, s.onlyDim) << "): " << s.summary << '\n';
+        os << "  " << type << " (" << dimensions(dims, ModelCatalogue::onlyDim(f, type))
+           << "): " << s.summary << '\n';
         if (s.keys.empty())
             os << "    no keys of its own\n";
         else

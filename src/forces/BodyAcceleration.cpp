@@ -13,11 +13,8 @@ template <int dim> double BodyAcceleration<dim>::energySupply(double mass, doubl
 template <int dim>
 std::unique_ptr<BodyAcceleration<dim>> BodyAcceleration<dim>::create(const Dictionary& dict) {
     // Cases written before `type:` existed have only `value:`: constant.
-    std::unique_ptr<BodyAcceleration> g;
-    if (dict.has("type"))
-        g = BodyAccelerationRegistry<dim>::create(dict);
-    else
-        g = std::make_unique<ConstantAcceleration<dim>>(dict);
+    if (dict.has("type")) return BodyAccelerationRegistry<dim>::create(dict);
+    auto g = std::make_unique<ConstantAcceleration<dim>>(dict);
     dict.checkUnknownKeys();
     return g;
 }

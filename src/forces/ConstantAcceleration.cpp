@@ -10,8 +10,7 @@ ConstantAcceleration<dim>::ConstantAcceleration(const Dictionary& dict)
 template class ConstantAcceleration<2>;
 template class ConstantAcceleration<3>;
 
-MPM_REGISTER(BodyAccelerationRegistry<2>, ConstantAcceleration<2>, "constant");
-MPM_REGISTER(BodyAccelerationRegistry<3>, ConstantAcceleration<3>, "constant");
+MPM_REGISTER_DIMS(BodyAccelerationRegistry, ConstantAcceleration, "constant");
 MPM_SCHEMA("bodyAccelerations", "constant",
            {"constant g",
             {{"value", "vector", "m/s²", "required", "gravitational acceleration g"}},

@@ -64,8 +64,7 @@ template <int dim> double RampAcceleration<dim>::totalVariation() const {
 template class RampAcceleration<2>;
 template class RampAcceleration<3>;
 
-MPM_REGISTER(BodyAccelerationRegistry<2>, RampAcceleration<2>, "ramp");
-MPM_REGISTER(BodyAccelerationRegistry<3>, RampAcceleration<3>, "ramp");
+MPM_REGISTER_DIMS(BodyAccelerationRegistry, RampAcceleration, "ramp");
 MPM_SCHEMA("bodyAccelerations", "ramp",
            {"g turned smoothly from a to b over [t₀, t₀ + T]",
             {{"value", "vector", "m/s²", "required", "b, g after the ramp"},

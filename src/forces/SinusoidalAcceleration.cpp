@@ -51,8 +51,7 @@ double SinusoidalAcceleration<dim>::energySupply(double mass, double extent) con
 template class SinusoidalAcceleration<2>;
 template class SinusoidalAcceleration<3>;
 
-MPM_REGISTER(BodyAccelerationRegistry<2>, SinusoidalAcceleration<2>, "sinusoidal");
-MPM_REGISTER(BodyAccelerationRegistry<3>, SinusoidalAcceleration<3>, "sinusoidal");
+MPM_REGISTER_DIMS(BodyAccelerationRegistry, SinusoidalAcceleration, "sinusoidal");
 MPM_SCHEMA(
     "bodyAccelerations", "sinusoidal",
     {"g₀ plus a sinusoidal vibration of amplitude A along d (a shaken container's frame)",

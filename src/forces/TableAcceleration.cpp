@@ -54,8 +54,7 @@ template <int dim> double TableAcceleration<dim>::totalVariation() const {
 template class TableAcceleration<2>;
 template class TableAcceleration<3>;
 
-MPM_REGISTER(BodyAccelerationRegistry<2>, TableAcceleration<2>, "table");
-MPM_REGISTER(BodyAccelerationRegistry<3>, TableAcceleration<3>, "table");
+MPM_REGISTER_DIMS(BodyAccelerationRegistry, TableAcceleration, "table");
 MPM_SCHEMA("bodyAccelerations", "table",
            {"g(t) from a table, linear in t",
             {{"table", "list of [t, gx, gy(, gz)]", "s, m/s²", "required",

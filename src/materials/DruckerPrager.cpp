@@ -80,15 +80,7 @@ std::string DruckerPragerPlasticity::describe() const {
     return os.str();
 }
 
-template class ElastoPlastic<2, HenckyLaw, DruckerPragerPlasticity>;
-template class ElastoPlastic<3, HenckyLaw, DruckerPragerPlasticity>;
-template class ElastoPlastic<2, HypoelasticLaw, DruckerPragerPlasticity>;
-template class ElastoPlastic<3, HypoelasticLaw, DruckerPragerPlasticity>;
-
-static const MaterialRegistry<2>::Add
-    registerDruckerPrager2("druckerPrager", createElastoPlastic<2, DruckerPragerPlasticity>);
-static const MaterialRegistry<3>::Add
-    registerDruckerPrager3("druckerPrager", createElastoPlastic<3, DruckerPragerPlasticity>);
+MPM_REGISTER_PLASTICITY(DruckerPragerPlasticity, "druckerPrager");
 MPM_SCHEMA("materials", "druckerPrager",
            {"Drucker-Prager plasticity; cohesion, tension cut-off and dilation with elasticity: "
             "hypoelastic [000], [001 Eq. 31b-36]",

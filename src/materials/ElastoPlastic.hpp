@@ -11,6 +11,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 // Materials as a composition: elastic law × plastic flow × options.
 //
@@ -21,9 +23,9 @@
 //    (DruckerPrager.hpp), MuIPlasticity (MuI.hpp). It gives the per-step flow functor
 //    (FlowRules.hpp), the tension cut-off and its K0. A new flow rule is a new Plasticity
 //    class with the members of NoPlasticity and a flow functor with `beta`, `yield` and
-//    `multiplier` that the laws' return maps accept, registered with createElastoPlastic like
-//    MuI.cpp. (The viscoelastic μ(I) of [002] carries σᵉ beside σ and a viscous trial: it is
-//    its own Material, ViscoelasticMuI.hpp.)
+//    `multiplier` that the laws' return maps accept, registered with MPM_REGISTER_PLASTICITY
+//    like MuI.cpp (a missing member is a static_assert naming it). (The viscoelastic μ(I) of [002]
+//    carries σᵉ beside σ and a viscous trial: it is its own Material, ViscoelasticMuI.hpp.)
 //  - Options: the trans-phase relation [000 Eq. 10] (transPhase, criticalDensity) of plastic
 //    materials, passed to the kernels as ρ_c (0: off).
 // ElastoPlastic<dim, Law, Plasticity> is instantiated per combination; the `type:` factory
@@ -45,11 +47,57 @@ struct NoPlasticity {
     double defaultK0(const ElasticConstants& c) const { return c.nu / (1.0 - c.nu); }
 };
 
+/// `Trait<T>` is true when `expr` (an expression of T) is valid: the detection idiom, so that a
+/// Plasticity or Law that lacks a member fails a static_assert that names it.
+#define MPM_DETECT(Trait, expr)                                                                    \
+    template <class T, class = void> struct Trait : std::false_type {};                            \
+    template <class T> struct Trait<T, std::void_t<decltype(expr)>> : std::true_type {}
+
+namespace detect {
+MPM_DETECT(Plastic, bool{T::plastic});
+MPM_DETECT(Describe, std::string(std::declval<const T&>().describe()));
+MPM_DETECT(Flow, std::declval<const T&>().flow(0.0));
+MPM_DETECT(Cutoff, TensionCutoff(std::declval<const T&>().cutoff()));
+MPM_DETECT(PlasticK0,
+           double(std::declval<const T&>().defaultK0(std::declval<const ElasticConstants&>())));
+MPM_DETECT(Kind, ElasticLaw{T::kind});
+MPM_DETECT(BatchedEnergy, bool{T::batchedEnergy});
+MPM_DETECT(Initialise,
+           T::initialise(std::declval<const ElasticConstants&>(), std::declval<Particles<2>&>(),
+                         Index{}, std::declval<const Mat3&>()));
+MPM_DETECT(StrainEnergy, double(T::strainEnergy(std::declval<const ElasticConstants&>(),
+                                                std::declval<const Particles<2>&>(), Index{})));
+} // namespace detect
+
 /// A material of elastic law `Law` and plasticity `Plasticity` (see above).
 /// Keys: density, E, nu, the plasticity's keys and, for plastic materials, transPhase (default
 /// true), criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]) and
 /// gasVolume (point | neighbourhood, default point: TransPhaseRule::relaxGasVolumes).
 template <int dim, class Law, class Plasticity> class ElastoPlastic : public Material<dim> {
+    static_assert(detect::Plastic<Plasticity>::value,
+                  "a Plasticity needs `static constexpr bool plastic` (see NoPlasticity)");
+    static_assert(std::is_constructible_v<Plasticity, const Dictionary&, const ElasticConstants&,
+                                          ElasticLaw, int>,
+                  "a Plasticity needs a constructor (const Dictionary&, const ElasticConstants&, "
+                  "ElasticLaw, int dim)");
+    static_assert(detect::Describe<Plasticity>::value,
+                  "a Plasticity needs `std::string describe() const`");
+    static_assert(detect::Flow<Plasticity>::value,
+                  "a Plasticity needs `flow(double dt) const` returning its flow functor");
+    static_assert(detect::Cutoff<Plasticity>::value,
+                  "a Plasticity needs `TensionCutoff cutoff() const`");
+    static_assert(detect::PlasticK0<Plasticity>::value,
+                  "a Plasticity needs `double defaultK0(const ElasticConstants&) const`");
+    static_assert(detect::Kind<Law>::value, "a Law needs `static constexpr ElasticLaw kind`");
+    static_assert(detect::BatchedEnergy<Law>::value,
+                  "a Law needs `static constexpr bool batchedEnergy`");
+    static_assert(detect::Initialise<Law>::value,
+                  "a Law needs `static void initialise(const ElasticConstants&, Particles<dim>&, "
+                  "Index, const Mat3& sigma0)`");
+    static_assert(detect::StrainEnergy<Law>::value,
+                  "a Law needs `static double strainEnergy(const ElasticConstants&, const "
+                  "Particles<dim>&, Index)`");
+
 public:
     ElastoPlastic(const Dictionary& dict, const std::string& name)
         : Material<dim>(dict, name), c_(dict), plasticity_(dict, c_, Law::kind, dim) {
@@ -139,5 +187,18 @@ std::unique_ptr<Material<dim>> createElastoPlastic(const Dictionary& dict,
         return std::make_unique<ElastoPlastic<dim, HypoelasticLaw, Plasticity>>(dict, name);
     return std::make_unique<ElastoPlastic<dim, HenckyLaw, Plasticity>>(dict, name);
 }
+
+/// Register the plastic material `name` of `Plasticity` (createElastoPlastic, in 2D and 3D) and
+/// instantiate its four ElastoPlastic classes: the one line of a flow rule's .cpp, in namespace
+/// mpm. MPM_REGISTER_PLASTICITY(MuIPlasticity, "muI").
+#define MPM_REGISTER_PLASTICITY(Plasticity, name)                                                  \
+    template class ElastoPlastic<2, HenckyLaw, Plasticity>;                                        \
+    template class ElastoPlastic<3, HenckyLaw, Plasticity>;                                        \
+    template class ElastoPlastic<2, HypoelasticLaw, Plasticity>;                                   \
+    template class ElastoPlastic<3, HypoelasticLaw, Plasticity>;                                   \
+    static const MaterialRegistry<2>::Add MPM_CONCAT(mpmRegistrar, __COUNTER__)(                   \
+        name, createElastoPlastic<2, Plasticity>);                                                 \
+    static const MaterialRegistry<3>::Add MPM_CONCAT(mpmRegistrar, __COUNTER__)(                   \
+        name, createElastoPlastic<3, Plasticity>)
 
 } // namespace mpm

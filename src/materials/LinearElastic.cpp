@@ -7,8 +7,7 @@ namespace mpm {
 template class ElastoPlastic<2, HypoelasticLaw, NoPlasticity>;
 template class ElastoPlastic<3, HypoelasticLaw, NoPlasticity>;
 
-MPM_REGISTER(MaterialRegistry<2>, LinearElastic<2>, "linearElastic");
-MPM_REGISTER(MaterialRegistry<3>, LinearElastic<3>, "linearElastic");
+MPM_REGISTER_DIMS(MaterialRegistry, LinearElastic, "linearElastic");
 MPM_SCHEMA("materials", "linearElastic",
            {"linear elasticity, hypoelastic (Jaumann rate) [001 Eq. 25, 36]", elasticKeys(),
             "{type: linearElastic, density: 1000, E: 1.0e6, nu: 0.3}"});

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "materials/Material.hpp"
 
-#include "core/Registry.hpp"
+#include "case/Registry.hpp"
 
 #include <sstream>
 
@@ -31,9 +31,7 @@ template <int dim> std::string Material<dim>::describe() const {
 template <int dim>
 std::unique_ptr<Material<dim>> Material<dim>::create(const Dictionary& dict,
                                                      const std::string& name) {
-    auto m = MaterialRegistry<dim>::create(dict, name);
-    dict.checkUnknownKeys();
-    return m;
+    return MaterialRegistry<dim>::create(dict, name);
 }
 
 template <int dim>

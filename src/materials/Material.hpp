@@ -2,8 +2,8 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
+#include "case/Registry.hpp"
 #include "core/Parallel.hpp"
-#include "core/Registry.hpp"
 #include "core/Types.hpp"
 #include "particles/Particles.hpp"
 

@@ -30,13 +30,7 @@ MuIFlow MuIPlasticity::flow(double dt) const {
     return MuIFlow{muS_, mu2_ - muS_, I0_, G_, grainDiameter_ * std::sqrt(grainDensity_) / dt};
 }
 
-template class ElastoPlastic<2, HenckyLaw, MuIPlasticity>;
-template class ElastoPlastic<3, HenckyLaw, MuIPlasticity>;
-template class ElastoPlastic<2, HypoelasticLaw, MuIPlasticity>;
-template class ElastoPlastic<3, HypoelasticLaw, MuIPlasticity>;
-
-static const MaterialRegistry<2>::Add registerMuI2("muI", createElastoPlastic<2, MuIPlasticity>);
-static const MaterialRegistry<3>::Add registerMuI3("muI", createElastoPlastic<3, MuIPlasticity>);
+MPM_REGISTER_PLASTICITY(MuIPlasticity, "muI");
 MPM_SCHEMA("materials", "muI",
            {"μ(I) rheology [000 Eq. 9]",
             elasticKeys() + granularKeys() +

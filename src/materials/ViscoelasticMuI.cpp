@@ -236,8 +236,7 @@ Index ViscoelasticMuI<dim>::updateStress(Particles<dim>& p, const std::vector<In
 template class ViscoelasticMuI<2>;
 template class ViscoelasticMuI<3>;
 
-MPM_REGISTER(MaterialRegistry<2>, ViscoelasticMuI<2>, "viscoelasticMuI");
-MPM_REGISTER(MaterialRegistry<3>, ViscoelasticMuI<3>, "viscoelasticMuI");
+MPM_REGISTER_DIMS(MaterialRegistry, ViscoelasticMuI, "viscoelasticMuI");
 MPM_SCHEMA("materials", "viscoelasticMuI",
            {"viscoelastic μ(I) of [002], damped through the grains' coefficient of restitution",
             elasticKeys() +

@@ -38,8 +38,7 @@ private:
     std::vector<std::string> faceNames_;
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, BoundaryReaction<2>, "boundaryReaction");
-MPM_REGISTER(FunctionObjectRegistry<3>, BoundaryReaction<3>, "boundaryReaction");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, BoundaryReaction, "boundaryReaction");
 MPM_SCHEMA("functionObjects", "boundaryReaction",
            {"the force of the material on each grid face [N] (N/m in 2D)",
             {},

@@ -58,8 +58,7 @@ private:
     int material_ = -1;
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, CentreOfMass<2>, "centreOfMass");
-MPM_REGISTER(FunctionObjectRegistry<3>, CentreOfMass<3>, "centreOfMass");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, CentreOfMass, "centreOfMass");
 MPM_SCHEMA("functionObjects", "centreOfMass",
            {"mass, centre of mass and its velocity",
             {{"material", "string", "-", "all points", "the material to report"}},

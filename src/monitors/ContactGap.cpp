@@ -39,8 +39,7 @@ private:
     double smallest_ = 1e300;
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, ContactGap<2>, "contactGap");
-MPM_REGISTER(FunctionObjectRegistry<3>, ContactGap<3>, "contactGap");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, ContactGap, "contactGap");
 MPM_SCHEMA("functionObjects", "contactGap",
            {"the smallest point-body gap and the number of point-body contacts",
             {},

@@ -53,8 +53,7 @@ protected:
     }
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, Energy<2>, "energy");
-MPM_REGISTER(FunctionObjectRegistry<3>, Energy<3>, "energy");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, Energy, "energy");
 MPM_SCHEMA("functionObjects", "energy",
            {"kinetic, strain, gravitational and total energy [J] (J/m in 2D)",
             {},

@@ -74,9 +74,7 @@ FunctionObject<dim>::createAll(const Dictionary& controlDict) {
     if (!controlDict.has("functions")) return all;
     const Dictionary fns = controlDict.subDict("functions");
     for (const std::string& name : fns.keys()) {
-        const Dictionary d = fns.subDict(name);
-        all.push_back(FunctionObjectRegistry<dim>::create(d, name));
-        d.checkUnknownKeys();
+        all.push_back(FunctionObjectRegistry<dim>::create(fns.subDict(name), name));
     }
     fns.checkUnknownKeys();
     return all;

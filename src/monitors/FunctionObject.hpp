@@ -3,8 +3,8 @@
 
 #include "case/Case.hpp"
 #include "case/Dictionary.hpp"
+#include "case/Registry.hpp"
 #include "case/Time.hpp"
-#include "core/Registry.hpp"
 #include "solver/State.hpp"
 
 #include <filesystem>

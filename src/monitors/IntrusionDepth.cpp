@@ -66,8 +66,7 @@ private:
     std::vector<std::vector<int>> cells_;
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, IntrusionDepth<2>, "intrusionDepth");
-MPM_REGISTER(FunctionObjectRegistry<3>, IntrusionDepth<3>, "intrusionDepth");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, IntrusionDepth, "intrusionDepth");
 MPM_SCHEMA("functionObjects", "intrusionDepth",
            {"how deep a rigid body has entered the material, along -g",
             {{"body", "string", "-", "required", "the body"},

@@ -88,8 +88,7 @@ private:
     mutable bool warned_ = false;
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, IsolatedPoints<2>, "isolatedPoints");
-MPM_REGISTER(FunctionObjectRegistry<3>, IsolatedPoints<3>, "isolatedPoints");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, IsolatedPoints, "isolatedPoints");
 MPM_SCHEMA("functionObjects", "isolatedPoints",
            {"points with no other point within a radius (a gas of points)",
             {{"radius", "scalar", "m", "h", "neighbour radius r (> 0)"},

@@ -33,8 +33,7 @@ protected:
     }
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, LoadBalance<2>, "loadBalance");
-MPM_REGISTER(FunctionObjectRegistry<3>, LoadBalance<3>, "loadBalance");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, LoadBalance, "loadBalance");
 MPM_SCHEMA("functionObjects", "loadBalance",
            {"how evenly the ranks of a parallel run share the points", {}, "{type: loadBalance}"});
 

@@ -67,8 +67,7 @@ private:
     Vec<dim> raw_ = Vec<dim>::Zero();
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, LoadCell<2>, "loadCell");
-MPM_REGISTER(FunctionObjectRegistry<3>, LoadCell<3>, "loadCell");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, LoadCell, "loadCell");
 MPM_SCHEMA("functionObjects", "loadCell",
            {"one face's reaction and its moving average, sampled every step",
             {{"face", "word", "-", "required", "the face: xMin xMax yMin yMax (zMin zMax in 3D)"},

@@ -232,8 +232,7 @@ private:
     mutable std::vector<char> warned_; ///< probe k was reported empty
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, Probes<2>, "probes");
-MPM_REGISTER(FunctionObjectRegistry<3>, Probes<3>, "probes");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, Probes, "probes");
 MPM_SCHEMA("functionObjects", "probes",
            {"material point fields at fixed points (mass-weighted Shepard average)",
             {{"probeLocations", "list of vectors", "m", "required",

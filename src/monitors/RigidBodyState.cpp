@@ -64,8 +64,7 @@ private:
     std::string only_;
 };
 
-MPM_REGISTER(FunctionObjectRegistry<2>, RigidBodyState<2>, "rigidBodyState");
-MPM_REGISTER(FunctionObjectRegistry<3>, RigidBodyState<3>, "rigidBodyState");
+MPM_REGISTER_DIMS(FunctionObjectRegistry, RigidBodyState, "rigidBodyState");
 MPM_SCHEMA("functionObjects", "rigidBodyState",
            {"centroid, velocities, contact force and torque of the rigid bodies",
             {{"body", "string", "-", "all bodies", "the body to report"}},

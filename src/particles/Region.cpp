@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/Region.hpp"
 
+#include "case/Registry.hpp"
 #include "core/Constants.hpp"
-#include "core/Registry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 namespace mpm {
 
 template <int dim> std::unique_ptr<Region<dim>> Region<dim>::create(const Dictionary& dict) {
-    return Registry<Region<dim>>::create(dict);
+    return RegionRegistry<dim>::create(dict);
 }
 
 template class Region<2>;
@@ -47,13 +47,11 @@ private:
     Eigen::AlignedBox<double, dim> box_;
 };
 
-/// Ball |x - c| <= r: volume = pi r^2 (disk, 2D) or 4/3 pi r^3 (sphere, 3D).
-/// `name` is the registered type; `sphere` is valid in 3D only, `disk` in 2D only.
+/// Ball |x - c| <= r: volume = pi r^2 (disk, 2D) or 4/3 pi r^3 (sphere, 3D); registered as
+/// `disk` in 2D and `sphere` in 3D.
 template <int dim> class BallRegion : public Region<dim> {
 public:
-    BallRegion(const Dictionary& dict, const std::string& name) {
-        if (name == "sphere" && dim != 3) dict.error("type", "'sphere' is 3D; use 'disk' in 2D");
-        if (name == "disk" && dim != 2) dict.error("type", "'disk' is 2D; use 'sphere' in 3D");
+    explicit BallRegion(const Dictionary& dict) {
         centre_ = readVec<dim>(dict, "centre");
         radius_ = dict.getScalar("radius", Bounds::positive());
         dict.checkUnknownKeys();
@@ -74,23 +72,12 @@ private:
     double radius_ = 0.0;
 };
 
-template <int dim> class SphereRegion : public BallRegion<dim> {
-public:
-    explicit SphereRegion(const Dictionary& dict) : BallRegion<dim>(dict, "sphere") {}
-};
-
-template <int dim> class DiskRegion : public BallRegion<dim> {
-public:
-    explicit DiskRegion(const Dictionary& dict) : BallRegion<dim>(dict, "disk") {}
-};
-
 /// Solid circular cylinder of radius r around the segment p1 -> p2 (3D only), with flat end
 /// caps: contains x iff t = (x - p1).a / |a|^2 in [0, 1] and |x - p1 - t a| <= r, a = p2 - p1.
 /// Volume = pi r^2 |a|.
 template <int dim> class CylinderRegion : public Region<dim> {
 public:
     explicit CylinderRegion(const Dictionary& dict) {
-        if constexpr (dim != 3) dict.error("type", "'cylinder' is 3D only; use box in 2D");
         p1_ = readVec<dim>(dict, "p1");
         p2_ = readVec<dim>(dict, "p2");
         radius_ = dict.getScalar("radius", Bounds::positive());
@@ -207,19 +194,14 @@ private:
 MPM_FAMILY_INFO("regions", {"<set>.region.type in constant/particles",
                             "7. constant/particles",
                             {{"type", "word", "-", "required", "the region's shape"}}});
-MPM_FAMILY(Registry<Region<2>>, 2, "regions");
-MPM_FAMILY(Registry<Region<3>>, 3, "regions");
+MPM_FAMILY(RegionRegistry<2>, 2, "regions");
+MPM_FAMILY(RegionRegistry<3>, 3, "regions");
 
-MPM_REGISTER(Registry<Region<2>>, BoxRegion<2>, "box");
-MPM_REGISTER(Registry<Region<3>>, BoxRegion<3>, "box");
-MPM_REGISTER(Registry<Region<2>>, SphereRegion<2>, "sphere");
-MPM_REGISTER(Registry<Region<3>>, SphereRegion<3>, "sphere");
-MPM_REGISTER(Registry<Region<2>>, DiskRegion<2>, "disk");
-MPM_REGISTER(Registry<Region<3>>, DiskRegion<3>, "disk");
-MPM_REGISTER(Registry<Region<2>>, CylinderRegion<2>, "cylinder");
-MPM_REGISTER(Registry<Region<3>>, CylinderRegion<3>, "cylinder");
-MPM_REGISTER(Registry<Region<2>>, PolygonRegion<2>, "polygon");
-MPM_REGISTER(Registry<Region<3>>, PolygonRegion<3>, "polygon");
+MPM_REGISTER_DIMS(RegionRegistry, BoxRegion, "box");
+MPM_REGISTER_ONLY(3, RegionRegistry, BallRegion<3>, "sphere");
+MPM_REGISTER_ONLY(2, RegionRegistry, BallRegion<2>, "disk");
+MPM_REGISTER_ONLY(3, RegionRegistry, CylinderRegion<3>, "cylinder");
+MPM_REGISTER_DIMS(RegionRegistry, PolygonRegion, "polygon");
 MPM_SCHEMA("regions", "box",
            {"an axis-aligned box",
             {{"min", "vector", "m", "required", "lower corner"},
@@ -230,20 +212,20 @@ MPM_SCHEMA("regions", "disk",
             {{"centre", "vector", "m", "required", "centre"},
              {"radius", "scalar", "m", "required", "radius (> 0)"}},
             "{type: disk, centre: [0.1, 0.1], radius: 0.05}",
-            2});
+            "use 'sphere' in 3D"});
 MPM_SCHEMA("regions", "sphere",
            {"a ball",
             {{"centre", "vector", "m", "required", "centre"},
              {"radius", "scalar", "m", "required", "radius (> 0)"}},
             "{type: sphere, centre: [0.1, 0.1, 0.1], radius: 0.05}",
-            3});
+            "use 'disk' in 2D"});
 MPM_SCHEMA("regions", "cylinder",
            {"a solid cylinder with flat caps",
             {{"p1", "vector", "m", "required", "one end of the axis"},
              {"p2", "vector", "m", "required", "the other end (≠ p1)"},
              {"radius", "scalar", "m", "required", "radius (> 0)"}},
             "{type: cylinder, p1: [0.1, 0.1, 0], p2: [0.1, 0.1, 0.2], radius: 0.05}",
-            3});
+            "use 'box' or 'polygon' in 2D"});
 MPM_SCHEMA("regions", "polygon",
            {"a polygon (even-odd rule); in 3D a prism extruded along an axis",
             {{"vertices", "list of [x, y]", "m", "required",

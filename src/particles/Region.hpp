@@ -36,9 +36,12 @@ public:
     /// Exact volume of the region (area in 2D).
     virtual double volume() const = 0;
 
-    /// Build the region `dict` names by its `type:` entry (Registry<Region<dim>>).
+    /// Build the region `dict` names by its `type:` entry (RegionRegistry).
     static std::unique_ptr<Region> create(const Dictionary& dict);
 };
+
+template <class Base, class... Args> class Registry; // case/Registry.hpp
+template <int dim> using RegionRegistry = Registry<Region<dim>>;
 
 extern template class Region<2>;
 extern template class Region<3>;

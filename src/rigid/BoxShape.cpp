@@ -101,8 +101,7 @@ void BoxShape<dim>::surface(std::vector<Vec3>& points, std::vector<std::vector<i
 template class BoxShape<2>;
 template class BoxShape<3>;
 
-MPM_REGISTER(ShapeRegistry<2>, BoxShape<2>, "box");
-MPM_REGISTER(ShapeRegistry<3>, BoxShape<3>, "box");
+MPM_REGISTER_DIMS(ShapeRegistry, BoxShape, "box");
 MPM_SCHEMA("shapes", "box",
            {"a box (a rectangle in 2D)",
             {{"halfExtents", "vector", "m", "none",

@@ -53,19 +53,6 @@ void axisWeights(double xh, int n, std::array<int, 3>& idx, std::array<double, 3
     throw std::runtime_error(why);
 }
 
-/// The 2D registration only says that level sets are 3D.
-class LevelSetShape2D : public Shape<2> {
-public:
-    explicit LevelSetShape2D(const Dictionary& dict) {
-        dict.error("type", "'levelSet' is 3D only; in 2D use 'disk', 'box' or another 2D shape");
-    }
-    double distance(const Vec<2>&, Vec<2>&) const override { return 0.0; }
-    double volume() const override { return 0.0; }
-    Vec3 unitInertia() const override { return Vec3::Zero(); }
-    double boundingRadius() const override { return 0.0; }
-    void surface(std::vector<Vec3>&, std::vector<std::vector<int>>&) const override {}
-};
-
 } // namespace
 
 LevelSetShape::LevelSetShape(const Dictionary& dict) {
@@ -247,13 +234,12 @@ void LevelSetShape::buildSurface() {
     }
 }
 
-MPM_REGISTER(ShapeRegistry<3>, LevelSetShape, "levelSet");
-MPM_REGISTER(ShapeRegistry<2>, LevelSetShape2D, "levelSet");
+MPM_REGISTER_ONLY(3, ShapeRegistry, LevelSetShape, "levelSet");
 MPM_SCHEMA("shapes", "levelSet",
            {"any closed mesh, through a level set",
             {{"file", "string", "-", "required",
               "the .vti written by surfaceToLevelSet (relative to the case)"}},
             "{type: levelSet, file: constant/levelSets/rock.vti}",
-            3});
+            "in 2D use 'disk', 'box' or another 2D shape"});
 
 } // namespace mpm

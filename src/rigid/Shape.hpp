@@ -2,7 +2,7 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
-#include "core/Registry.hpp"
+#include "case/Registry.hpp"
 #include "core/Types.hpp"
 
 #include <array>

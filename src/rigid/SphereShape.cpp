@@ -15,9 +15,6 @@ constexpr int nCircle = 64;
 } // namespace
 
 template <int dim> SphereShape<dim>::SphereShape(const Dictionary& dict) {
-    const std::string type = dict.getString("type");
-    if (type == "sphere" && dim != 3) dict.error("type", "'sphere' is 3D; use 'disk' in 2D");
-    if (type == "disk" && dim != 2) dict.error("type", "'disk' is 2D; use 'sphere' in 3D");
     radius_ = dict.getScalar("radius", Bounds::positive());
     dict.checkUnknownKeys();
     sp_.radius = radius_;
@@ -97,19 +94,17 @@ void SphereShape<dim>::surface(std::vector<Vec3>& points,
 template class SphereShape<2>;
 template class SphereShape<3>;
 
-MPM_REGISTER(ShapeRegistry<2>, SphereShape<2>, "disk");
-MPM_REGISTER(ShapeRegistry<2>, SphereShape<2>, "sphere");
-MPM_REGISTER(ShapeRegistry<3>, SphereShape<3>, "sphere");
-MPM_REGISTER(ShapeRegistry<3>, SphereShape<3>, "disk");
+MPM_REGISTER_ONLY(2, ShapeRegistry, SphereShape<2>, "disk");
+MPM_REGISTER_ONLY(3, ShapeRegistry, SphereShape<3>, "sphere");
 MPM_SCHEMA("shapes", "sphere",
            {"a sphere",
             {{"radius", "scalar", "m", "required", "radius (> 0)"}},
             "{type: sphere, radius: 0.019}",
-            3});
+            "use 'disk' in 2D"});
 MPM_SCHEMA("shapes", "disk",
            {"a disk",
             {{"radius", "scalar", "m", "required", "radius (> 0)"}},
             "{type: disk, radius: 0.019}",
-            2});
+            "use 'sphere' in 3D"});
 
 } // namespace mpm

@@ -222,7 +222,7 @@ void SpheropolygonShape::surface(std::vector<Vec3>& points,
         cells.push_back({i, (i + 1) % np});
 }
 
-MPM_REGISTER(ShapeRegistry<2>, SpheropolygonShape, "spheropolygon");
+MPM_REGISTER_ONLY(2, ShapeRegistry, SpheropolygonShape, "spheropolygon");
 MPM_SCHEMA("shapes", "spheropolygon",
            {"a convex polygon rounded by a disk [001 Eq. 37]",
             {{"vertices", "list of [x, y]", "m", "required",
@@ -230,13 +230,6 @@ MPM_SCHEMA("shapes", "spheropolygon",
              {"radius", "scalar", "m", "required",
               "sphero-radius a ≥ 0 (> 0 with fewer than 3 vertices)"}},
             "{type: spheropolygon, vertices: [[0, 0], [0.02, 0], [0, 0.02]], radius: 0.001}",
-            2});
-
-namespace {
-const ShapeRegistry<3>::Add
-    spheropolygon3D("spheropolygon", [](const Dictionary& d) -> std::unique_ptr<Shape<3>> {
-        d.error("type", "'spheropolygon' is a 2D shape (polygon ⊕ disk); this case is 3D");
-    });
-} // namespace
+            "it is a polygon ⊕ disk; in 3D use 'box', 'sphere' or 'levelSet'"});
 
 } // namespace mpm

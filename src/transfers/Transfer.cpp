@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transfers/Transfer.hpp"
+#include "case/Registry.hpp"
 #include "core/Parallel.hpp"
-#include "core/Registry.hpp"
 #include "core/Stream.hpp"
 
 #include "kernels/Kernels.hpp"

@@ -25,7 +25,7 @@ public:
     using SphereShape<2>::SphereShape;
     const SpheroPolygon* spheroPolygon() const override { return nullptr; }
 };
-MPM_REGISTER(ShapeRegistry<2>, NotAPolygon, "testNotAPolygon");
+MPM_REGISTER_ONLY(2, ShapeRegistry, NotAPolygon, "testNotAPolygon");
 
 std::unique_ptr<RigidBody<2>> body(const std::string& yaml, const std::string& name = "b") {
     return std::make_unique<RigidBody<2>>(Dictionary::fromString(yaml, "rigidBodies"), name);
