@@ -176,8 +176,10 @@ void printTable(std::ostream& os, const KeyList& rows, const std::string& indent
     }
 }
 
+/// "2D, 3D", "3D only", …; a family's registry of dimension 0 serves both dimensions.
 std::string dimensions(const std::set<int>& dims, int onlyDim) {
     if (onlyDim) return std::to_string(onlyDim) + "D only";
+    if (dims.count(0)) return "2D, 3D";
     std::string s;
     for (const int d : dims)
         s += (s.empty() ? "" : ", ") + std::to_string(d) + "D";

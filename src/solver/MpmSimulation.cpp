@@ -54,12 +54,10 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
     const Dictionary schemes = cs.read("system/mpmSchemes");
     order_ = StressUpdateOrder::create(schemes);
     damping_ = schemes.getScalarOr("damping", 0.0, Bounds::halfOpen(0.0, 1.0));
-    if (schemes.getWordOr("antiLocking", "none", {"none", "fBar"}) == "fBar") {
-        fBar_ = std::make_unique<FBar<dim>>();
-        if (bc_.anyPeriodic())
-            fBar_->setNodalFold(
-                [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
-    }
+    antiLocking_ = AntiLocking<dim>::create(schemes);
+    if (bc_.anyPeriodic())
+        antiLocking_->setNodalFold(
+            [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
     if (std::any_of(materials_.begin(), materials_.end(),
                     [](const auto& m) { return m->criticalDensity() > 0.0; })) {
         phaseDensity_ = std::make_unique<PhaseDensity<dim>>(transPhaseFields(particles_).density);
@@ -360,7 +358,7 @@ template <int dim> void MpmSimulation<dim>::updateStress(double dt) {
            "the stress update saw no velocity gradient in a non-uniform flow");
     // Kinematics: [L ← L̄ (F̄ anti-locking)], F ← (1 + Δt L) F, V = det(F) V⁰ or, for rate-form
     // materials, V ← V exp(Δt tr L) [002 Eq. 76] (Material::volumeFromRate).
-    if (fBar_) fBar_->apply(particles_, grid_, *transfer_, sort_, dt);
+    antiLocking_->apply(particles_, grid_, *transfer_, sort_, dt);
     const Index inverted = particles_.updateDeformation(dt, volumeFromRate_);
     const bool isInverted = inverted < static_cast<Index>(particles_.size());
     if (phaseDensity_) phaseDensity_->apply(particles_, grid_, *transfer_, sort_);

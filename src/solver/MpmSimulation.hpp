@@ -23,7 +23,7 @@
 #include "solver/Simulation.hpp"
 #include "solver/State.hpp"
 #include "solver/StressUpdateOrder.hpp"
-#include "transfers/FBar.hpp"
+#include "transfers/AntiLocking.hpp"
 #include "transfers/PhaseDensity.hpp"
 #include "transfers/Transfer.hpp"
 
@@ -171,7 +171,7 @@ private:
     std::vector<std::vector<Index>> materialParticles_;
     std::unique_ptr<Transfer<dim>> transfer_;
     std::unique_ptr<StressUpdateOrder> order_;
-    std::unique_ptr<FBar<dim>> fBar_; ///< F̄ anti-locking (`antiLocking: fBar`), or none
+    std::unique_ptr<AntiLocking<dim>> antiLocking_; ///< `antiLocking` (none, fBar: F̄)
     /// Particle splitting (`splitting: {maxStretch: …}`), or none
     std::unique_ptr<ParticleSplitting<dim>> splitting_;
     Index split_ = 0; ///< points split in this run, all ranks

@@ -56,7 +56,7 @@ template <int dim> void MpmSimulation<dim>::setUpParallel() {
         if (bc_.anyPeriodic()) subdomain_->foldPeriodic(bc_.lattice(), q);
         subdomain_->halo().copy(q, grid_.mass);
     };
-    if (fBar_) fBar_->setNodalFold(fold);
+    antiLocking_->setNodalFold(fold);
     if (phaseDensity_) phaseDensity_->setNodalFold(fold);
     if (comm_.master())
         rootWriter_ = std::make_unique<io::TimeDirectoryWriter>(

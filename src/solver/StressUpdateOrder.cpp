@@ -1,12 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "solver/StressUpdateOrder.hpp"
 
+#include "case/Selection.hpp"
+
 namespace mpm {
+
+MPM_FAMILY_INFO("stressUpdateOrders", {"stressUpdate in system/mpmSchemes (a word; default USL)",
+                                       "3. system/mpmSchemes",
+                                       {}});
+MPM_FAMILY(StressUpdateOrderRegistry, 0, "stressUpdateOrders");
 
 namespace {
 
 class UpdateStressLast final : public StressUpdateOrder {
 public:
+    explicit UpdateStressLast(const Dictionary&) {}
     bool forceWithMomentum() const override { return true; }
     bool gradientInGridToParticle() const override { return true; }
     void afterGridToParticle(StressPhases& s, double dt) const override { s.updateStress(dt); }
@@ -14,6 +22,7 @@ public:
 
 class UpdateStressFirst final : public StressUpdateOrder {
 public:
+    explicit UpdateStressFirst(const Dictionary&) {}
     bool forceWithMomentum() const override { return false; }
     bool gradientInGridToParticle() const override { return false; }
     bool gradientBeforeUpdate() const override { return true; }
@@ -27,6 +36,7 @@ public:
 
 class ModifiedUpdateStressLast final : public StressUpdateOrder {
 public:
+    explicit ModifiedUpdateStressLast(const Dictionary&) {}
     bool forceWithMomentum() const override { return true; }
     bool gradientInGridToParticle() const override { return false; }
     void afterGridToParticle(StressPhases& s, double dt) const override {
@@ -39,11 +49,24 @@ public:
 
 } // namespace
 
+MPM_REGISTER(StressUpdateOrderRegistry, UpdateStressLast, "USL");
+MPM_SCHEMA("stressUpdateOrders", "USL",
+           {"update stress last: the stress is updated after G2P, L from the updated grid velocity",
+            {},
+            "stressUpdate: USL"});
+MPM_REGISTER(StressUpdateOrderRegistry, UpdateStressFirst, "USF");
+MPM_SCHEMA("stressUpdateOrders", "USF",
+           {"update stress first: after P2G, before the grid update, L from the P2G velocity",
+            {},
+            "stressUpdate: USF"});
+MPM_REGISTER(StressUpdateOrderRegistry, ModifiedUpdateStressLast, "MUSL");
+MPM_SCHEMA("stressUpdateOrders", "MUSL",
+           {"modified USL: after G2P, L from a second projection of the updated momenta",
+            {},
+            "stressUpdate: MUSL"});
+
 std::unique_ptr<StressUpdateOrder> StressUpdateOrder::create(const Dictionary& schemes) {
-    const std::string order = schemes.getWordOr("stressUpdate", "USL", {"USF", "USL", "MUSL"});
-    if (order == "USF") return std::make_unique<UpdateStressFirst>();
-    if (order == "MUSL") return std::make_unique<ModifiedUpdateStressLast>();
-    return std::make_unique<UpdateStressLast>();
+    return selectByWord<StressUpdateOrderRegistry>(schemes, "stressUpdate", "USL");
 }
 
 } // namespace mpm

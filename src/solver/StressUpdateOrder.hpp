@@ -2,6 +2,7 @@
 #pragma once
 
 #include "case/Dictionary.hpp"
+#include "case/Registry.hpp"
 
 #include <memory>
 
@@ -33,6 +34,8 @@ protected:
 ///  - MUSL (modified USL, Sulsky et al. 1995): as USL, but after G2P the updated momenta are
 ///    projected back to the grid and L is taken from that velocity, which removes the
 ///    contribution of nodes with vanishing mass from L.
+/// The orders are the family `stressUpdateOrders` of StressUpdateOrderRegistry: another one is a
+/// class deriving this one, registered by MPM_REGISTER with its MPM_SCHEMA in its own .cpp.
 class StressUpdateOrder {
 public:
     virtual ~StressUpdateOrder() = default;
@@ -48,8 +51,12 @@ public:
     /// What follows G2P.
     virtual void afterGridToParticle(StressPhases&, double /*dt*/) const {}
 
-    /// Build the order named by `stressUpdate` (USF | USL | MUSL; default USL).
+    /// Build the order named by `stressUpdate` (USF | USL | MUSL; default USL), once at set-up.
     static std::unique_ptr<StressUpdateOrder> create(const Dictionary& schemes);
 };
+
+/// The stress-update orders by name (dimension-independent: the family's registry of
+/// dimension 0).
+using StressUpdateOrderRegistry = Registry<StressUpdateOrder>;
 
 } // namespace mpm

@@ -36,4 +36,10 @@ void FBar<dim>::apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>
 template class FBar<2>;
 template class FBar<3>;
 
+MPM_REGISTER_DIMS(AntiLockingRegistry, FBar, "fBar");
+MPM_SCHEMA("antiLocking", "fBar",
+           {"F̄: each point's volume change replaced by its neighbourhood's mass-weighted average",
+            {},
+            "antiLocking: fBar"});
+
 } // namespace mpm

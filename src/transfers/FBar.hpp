@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "grid/Grid.hpp"
-#include "particles/BlockSort.hpp"
-#include "particles/Particles.hpp"
-#include "transfers/Transfer.hpp"
+#include "transfers/AntiLocking.hpp"
 
 #include <functional>
 #include <vector>
@@ -31,15 +28,19 @@ namespace mpm {
 /// weights are those of x^n (the stencils the step's L_p came from). L̄ replaces L, so every
 /// material and the solver's F ← ΔF F, V = J V⁰ see the averaged volume change. A uniform ΔJ is
 /// kept exactly (Σ_i w_ip = 1), and the total volume change Σ m_p ΔJ_p is preserved.
-template <int dim> class FBar {
+template <int dim> class FBar final : public AntiLocking<dim> {
 public:
+    FBar() = default;
+    explicit FBar(const Dictionary&) {}
+
     /// Replace p.L by L̄ (grid mass from this step's P2G).
     void apply(Particles<dim>& p, const Grid<dim>& g, const Transfer<dim>& transfer,
-               const BlockSort<dim>& sort, double dt);
+               const BlockSort<dim>& sort, double dt) override;
 
     /// On a periodic lattice: `fold(q)` folds a nodal scalar's image nodes onto their owners
-    /// (BoundaryConditions::foldField), set once at set-up.
-    void setNodalFold(std::function<void(NodeArray<double>&)> fold) {
+    /// (BoundaryConditions::foldField); with several ranks it also sums the halo. Set once at
+    /// set-up.
+    void setNodalFold(std::function<void(NodeArray<double>&)> fold) override {
         foldNodal_ = std::move(fold);
     }
 

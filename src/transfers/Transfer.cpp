@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transfers/Transfer.hpp"
-#include "case/Registry.hpp"
+#include "case/Selection.hpp"
 #include "core/Parallel.hpp"
 #include "core/Stream.hpp"
 
@@ -513,88 +513,132 @@ private:
     mutable bool pending_ = false;           ///< st_ not yet evaluated for this step
 };
 
-/// APIC needs a kernel with constant inertia D_p (quadratic or cubic B-spline).
-template <class K> constexpr bool hasInertia() {
-    return std::is_same_v<K, QuadraticBSplineKernel> || std::is_same_v<K, CubicBSplineKernel>;
-}
+/// APIC needs a kernel with constant inertia D_p (its `InertiaFactor`: the quadratic and cubic
+/// B-splines).
+template <class K, class = void> struct HasInertia : std::false_type {};
+template <class K>
+struct HasInertia<K, std::void_t<decltype(K::InertiaFactor)>> : std::true_type {};
 
-template <int dim, class K>
-std::unique_ptr<Transfer<dim>> makeFor(K kernel, const std::string& scheme, double ratio,
-                                       const Dictionary& schemes) {
-    if (scheme == "apic") {
-        if constexpr (hasInertia<K>())
-            return std::make_unique<TransferImpl<dim, K, true>>(kernel, 0.0);
+/// A kernel that takes the particle half-width (GIMP's l_p / h).
+template <class K, class = void> struct HasHalfWidth : std::false_type {};
+template <class K> struct HasHalfWidth<K, std::void_t<decltype(K::l)>> : std::true_type {};
+
+/// What a transfer scheme (system/mpmSchemes `transfer`, the family `transfers`) asks of the
+/// gather: the affine terms (APIC) or the FLIP/PIC blend with ratio η (PIC: η = 0). A scheme
+/// registers in TransferSchemeRegistry, built from the `transfer:` map (`map` true) or from the
+/// word alone (`map` false: its keys take their defaults, and `dict` is system/mpmSchemes, which
+/// it must not read).
+struct TransferScheme {
+    bool affine = false;
+    double ratio = 0.0;
+    virtual ~TransferScheme() = default;
+};
+using TransferSchemeRegistry = Registry<TransferScheme, bool>;
+
+struct PicScheme final : TransferScheme {
+    PicScheme(const Dictionary&, bool) {}
+};
+struct FlipScheme final : TransferScheme {
+    FlipScheme(const Dictionary& dict, bool map) {
+        ratio = map ? dict.getScalarOr("ratio", 0.995, Bounds::closed(0.0, 1.0)) : 0.995;
+    }
+};
+struct ApicScheme final : TransferScheme {
+    ApicScheme(const Dictionary&, bool) { affine = true; }
+};
+
+/// A kernel (system/mpmSchemes `kernel`, the family `kernels`): it builds the transfer of a
+/// scheme with its kernel type, so that the transfer's loops are instantiated for it once.
+/// Registered by MPM_REGISTER_KERNEL; KernelOf<dim, K> is built with the particle half-width.
+template <int dim> struct KernelChoice {
+    virtual ~KernelChoice() = default;
+    virtual std::unique_ptr<Transfer<dim>> make(const TransferScheme& scheme,
+                                                const Dictionary& schemes) const = 0;
+};
+template <int dim> using KernelRegistry = Registry<KernelChoice<dim>, double>;
+
+template <int dim, class K> class KernelOf final : public KernelChoice<dim> {
+public:
+    KernelOf(const Dictionary&, double particleHalfWidth) {
+        if constexpr (HasHalfWidth<K>::value) kernel_.l = std::min(particleHalfWidth, 0.49);
+    }
+    std::unique_ptr<Transfer<dim>> make(const TransferScheme& scheme,
+                                        const Dictionary& schemes) const override {
+        if (!scheme.affine)
+            return std::make_unique<TransferImpl<dim, K, false>>(kernel_, scheme.ratio);
+        if constexpr (HasInertia<K>::value)
+            return std::make_unique<TransferImpl<dim, K, true>>(kernel_, 0.0);
         else
             schemes.error("transfer", std::string("apic needs kernel quadraticBSpline or "
                                                   "cubicBSpline (constant D_p), not ") +
                                           K::Name);
     }
-    return std::make_unique<TransferImpl<dim, K, false>>(kernel, ratio);
-}
 
-std::vector<std::string> transferNames() {
-    return {"pic", "flip", "apic"};
-}
+private:
+    K kernel_;
+};
 
 } // namespace
 
-// Kernels and transfers are words of system/mpmSchemes rather than registries; their families
-// list the same names the reader accepts.
+/// Register the kernel type K (src/kernels/Kernels.hpp) under K::Name in 2D and 3D, with its
+/// transfers: MPM_REGISTER_KERNEL(LinearKernel).
+#define MPM_REGISTER_KERNEL(K)                                                                     \
+    static const KernelRegistry<2>::Add MPM_CONCAT(mpmKernel, __COUNTER__)(                        \
+        K::Name, [](const Dictionary& d, double l) {                                               \
+            return std::unique_ptr<KernelChoice<2>>(new KernelOf<2, K>(d, l));                     \
+        });                                                                                        \
+    static const KernelRegistry<3>::Add MPM_CONCAT(mpmKernel, __COUNTER__)(                        \
+        K::Name, [](const Dictionary& d, double l) {                                               \
+            return std::unique_ptr<KernelChoice<3>>(new KernelOf<3, K>(d, l));                     \
+        })
+
 MPM_FAMILY_INFO("kernels", {"kernel in system/mpmSchemes (a word)", "3. system/mpmSchemes", {}});
-static const ModelCatalogue::AddTypes kernels2("kernels", 2, kernelNames);
-static const ModelCatalogue::AddTypes kernels3("kernels", 3, kernelNames);
+MPM_FAMILY(KernelRegistry<2>, 2, "kernels");
+MPM_FAMILY(KernelRegistry<3>, 3, "kernels");
+MPM_REGISTER_KERNEL(LinearKernel);
 MPM_SCHEMA("kernels", "linear",
            {"linear hat functions (C0; grid-crossing noise)", {}, "kernel: linear"});
+MPM_REGISTER_KERNEL(GimpKernel);
 MPM_SCHEMA("kernels", "gimp",
            {"generalised interpolation MPM, the particle half-width from the seeding",
             {},
             "kernel: gimp"});
+MPM_REGISTER_KERNEL(QuadraticBSplineKernel);
 MPM_SCHEMA("kernels", "quadraticBSpline",
            {"quadratic B-spline (C1; APIC's constant inertia)", {}, "kernel: quadraticBSpline"});
+MPM_REGISTER_KERNEL(CubicBSplineKernel);
 MPM_SCHEMA("kernels", "cubicBSpline",
            {"cubic B-spline (C2; APIC's constant inertia)", {}, "kernel: cubicBSpline"});
 
+// Transfer schemes serve both dimensions: the family's registry of dimension 0.
 MPM_FAMILY_INFO("transfers",
                 {"transfer in system/mpmSchemes (a word, or a map with type)",
                  "3. system/mpmSchemes",
                  {{"type", "word", "-", "required", "the transfer (in the map form)"}}});
-static const ModelCatalogue::AddTypes transfers2("transfers", 2, transferNames);
-static const ModelCatalogue::AddTypes transfers3("transfers", 3, transferNames);
+MPM_FAMILY(TransferSchemeRegistry, 0, "transfers");
+MPM_REGISTER(TransferSchemeRegistry, PicScheme, "pic");
 MPM_SCHEMA("transfers", "pic",
            {"particle-in-cell: the points take the grid velocity", {}, "transfer: pic"});
+MPM_REGISTER(TransferSchemeRegistry, FlipScheme, "flip");
 MPM_SCHEMA("transfers", "flip",
            {"PIC/FLIP blend: the points take a fraction η of the grid's velocity change",
             {{"ratio", "scalar", "-", "0.995", "FLIP fraction η, in [0, 1]"}},
             "transfer: {type: flip, ratio: 0.99}"});
+MPM_REGISTER(TransferSchemeRegistry, ApicScheme, "apic");
 MPM_SCHEMA("transfers", "apic",
            {"affine PIC (quadraticBSpline or cubicBSpline kernels)", {}, "transfer: apic"});
 
 template <int dim>
 std::unique_ptr<Transfer<dim>> Transfer<dim>::create(const Dictionary& schemes,
                                                      double particleHalfWidth) {
-    const std::string kernel = schemes.getWord("kernel", kernelNames());
-    std::string scheme;
-    double ratio = 0.0;
-    const std::vector<std::string> schemesValid = transferNames();
-    if (schemes.isDict("transfer")) {
-        const Dictionary t = schemes.subDict("transfer");
-        scheme = t.getWord("type", schemesValid);
-        if (scheme == "flip") ratio = t.getScalarOr("ratio", 0.995, Bounds::closed(0.0, 1.0));
-        setKeyHelp(t, "transfers", scheme);
-        t.checkUnknownKeys();
-    } else {
-        scheme = schemes.getWord("transfer", schemesValid);
-        if (scheme == "flip") ratio = 0.995;
-    }
-    if (kernel == LinearKernel::Name) return makeFor<dim>(LinearKernel{}, scheme, ratio, schemes);
-    if (kernel == GimpKernel::Name) {
-        GimpKernel k;
-        k.l = std::min(particleHalfWidth, 0.49);
-        return makeFor<dim>(k, scheme, ratio, schemes);
-    }
-    if (kernel == QuadraticBSplineKernel::Name)
-        return makeFor<dim>(QuadraticBSplineKernel{}, scheme, ratio, schemes);
-    return makeFor<dim>(CubicBSplineKernel{}, scheme, ratio, schemes);
+    // Chosen once: the kernel's transfer loops are instantiated for the kernel type.
+    const std::unique_ptr<KernelChoice<dim>> kernel =
+        selectByWord<KernelRegistry<dim>>(schemes, "kernel", "", particleHalfWidth);
+    const std::unique_ptr<TransferScheme> scheme =
+        schemes.isDict("transfer")
+            ? TransferSchemeRegistry::create(schemes.subDict("transfer"), true)
+            : selectByWord<TransferSchemeRegistry>(schemes, "transfer", "", false);
+    return kernel->make(*scheme, schemes);
 }
 
 template class Transfer<2>;

@@ -3,11 +3,14 @@
 // declared dimension that the other refuses with a generated message, a name registered twice
 // reported as an internal error, and every create checking the keys its model did not read.
 #include "case/Registry.hpp"
+#include "case/Selection.hpp"
 
 #include "TestSupport.hpp"
 #include "contact/CouplingLaw.hpp"
 #include "particles/Region.hpp"
 #include "rigid/Shape.hpp"
+#include "solver/StressUpdateOrder.hpp"
+#include "transfers/AntiLocking.hpp"
 
 #include <gtest/gtest.h>
 
@@ -146,6 +149,46 @@ TEST(Registry, CreateReportsAKeyTheModelDidNotRead) {
         CouplingLawRegistry<2>::create(dict("{type: barrier, friction: 0.1, stifness: 1}"), 0.01);
     });
     EXPECT_EQ(f.key(), "stifness");
+}
+
+TEST(Registry, AWordAmongOtherKeysSelectsAnOption) {
+    // `part: both` in a map of other keys: selectByWord reads that key only.
+    const Dictionary d = dict("{part: both, other: 1}");
+    EXPECT_NO_THROW(selectByWord<PartRegistry<2>>(d, "part", "flat"));
+    EXPECT_EQ(d.readKeys().count("other"), 0u);
+    // Absent: the default; absent and required (no default): an InputError at the key.
+    EXPECT_NO_THROW(selectByWord<PartRegistry<2>>(dict("{other: 1}"), "part", "both"));
+    const InputError missing = test::catchInputError(
+        [] { selectByWord<PartRegistry<2>>(dict("{other: 1}"), "part", ""); });
+    EXPECT_EQ(missing.key(), "part");
+    // An unknown word lists the registered ones (not the other dimension's refused 'solid').
+    const InputError e = test::catchInputError(
+        [] { selectByWord<PartRegistry<2>>(dict("{part: x}"), "part", "both"); });
+    EXPECT_EQ(e.key(), "part");
+    EXPECT_NE(std::string(e.what()).find("expected one of both, flat; got 'x'"), std::string::npos)
+        << e.what();
+    // A default that is not registered, or a registry without family: internal errors.
+    EXPECT_THROW(selectByWord<PartRegistry<2>>(dict("{}"), "part", "none"), std::logic_error);
+    EXPECT_THROW(selectByWord<Registry<Orphan>>(dict("{w: orphan}"), "w", ""), std::logic_error);
+    EXPECT_THROW(selectByWord<TwiceRegistry>(dict("{w: again}"), "w", ""), std::logic_error);
+}
+
+TEST(Registry, TheWordsOfTheSchemesSelectThroughTheirRegistries) {
+    const InputError e = test::catchInputError(
+        [] { StressUpdateOrder::create(dict("{stressUpdate: USX, kernel: linear}")); });
+    EXPECT_EQ(e.key(), "stressUpdate");
+    EXPECT_NE(std::string(e.what()).find("expected one of MUSL, USF, USL; got 'USX'"),
+              std::string::npos)
+        << e.what();
+    EXPECT_TRUE(StressUpdateOrder::create(dict("{kernel: linear}"))->gradientInGridToParticle());
+    EXPECT_TRUE(StressUpdateOrder::create(dict("{stressUpdate: USF}"))->gradientBeforeUpdate());
+    const InputError f =
+        test::catchInputError([] { AntiLocking<3>::create(dict("{antiLocking: Fbar}")); });
+    EXPECT_EQ(f.key(), "antiLocking");
+    EXPECT_NE(std::string(f.what()).find("expected one of fBar, none; got 'Fbar'"),
+              std::string::npos)
+        << f.what();
+    EXPECT_NO_THROW(AntiLocking<2>::create(dict("{}")));
 }
 
 } // namespace

@@ -10,10 +10,13 @@
 #include "contact/BodyContact.hpp"
 #include "contact/CouplingLaw.hpp"
 #include "forces/BodyAcceleration.hpp"
+#include "kernels/Kernels.hpp"
 #include "materials/Material.hpp"
 #include "monitors/FunctionObject.hpp"
 #include "particles/Region.hpp"
 #include "rigid/Shape.hpp"
+#include "solver/StressUpdateOrder.hpp"
+#include "transfers/AntiLocking.hpp"
 #include "transfers/Transfer.hpp"
 
 #include <gtest/gtest.h>
@@ -96,9 +99,18 @@ TEST(KeySchema, EveryFamilyOfTheSolverIsInTheCatalogue) {
         EXPECT_FALSE(f->info.docSection.empty()) << f->name;
         EXPECT_FALSE(ModelCatalogue::types(*f).empty()) << f->name << " has no types";
     }
-    const std::set<std::string> expected{
-        "materials",   "regions", "boundaryConditions", "bodyAccelerations", "couplingLaws",
-        "bodyContact", "shapes",  "functionObjects",    "kernels",           "transfers"};
+    const std::set<std::string> expected{"materials",
+                                         "regions",
+                                         "boundaryConditions",
+                                         "bodyAccelerations",
+                                         "couplingLaws",
+                                         "bodyContact",
+                                         "shapes",
+                                         "functionObjects",
+                                         "kernels",
+                                         "transfers",
+                                         "stressUpdateOrders",
+                                         "antiLocking"};
     EXPECT_EQ(names, expected);
 }
 
@@ -292,7 +304,7 @@ TEST(KeySchema, ModelsReadOnlyTheKeysTheirSchemaDeclares) {
     const std::set<std::string> needsFiles{"shapes.levelSet"};
     for (const auto* f : realFamilies()) {
         const auto creator = creators().find(f->name);
-        if (creator == creators().end()) continue; // kernels and transfers: below
+        if (creator == creators().end()) continue; // the words of system/mpmSchemes: below
         for (const auto& [type, schema] : f->schemas) {
             const Dictionary d = Dictionary::fromString(schema.example, f->name + "." + type);
             const int dim = exampleDim(*f, type);
@@ -322,6 +334,24 @@ TEST(KeySchema, ModelsReadOnlyTheKeysTheirSchemaDeclares) {
             EXPECT_NO_THROW(Transfer<2>::create(d, 0.25)) << family << '.' << type;
             EXPECT_NO_THROW(d.checkUnknownKeys()) << family << '.' << type;
         }
+    // The registered kernels are those of kernels/Kernels.hpp that the unit tests loop over.
+    std::set<std::string> kernels;
+    for (const auto& [type, dims] : ModelCatalogue::types(*ModelCatalogue::find("kernels")))
+        kernels.insert(type);
+    const std::vector<std::string> defined = kernelNames();
+    EXPECT_EQ(kernels, std::set<std::string>(defined.begin(), defined.end()));
+    // Stress-update orders and anti-locking: their examples are valid system/mpmSchemes lines.
+    for (const auto& [type, schema] : ModelCatalogue::find("stressUpdateOrders")->schemas) {
+        const Dictionary d = Dictionary::fromString(schema.example, "schemes");
+        EXPECT_NO_THROW(StressUpdateOrder::create(d)) << type;
+        EXPECT_NO_THROW(d.checkUnknownKeys()) << type;
+    }
+    for (const auto& [type, schema] : ModelCatalogue::find("antiLocking")->schemas) {
+        const Dictionary d = Dictionary::fromString(schema.example, "schemes");
+        EXPECT_NO_THROW(AntiLocking<2>::create(d)) << type;
+        EXPECT_NO_THROW(AntiLocking<3>::create(d)) << type;
+        EXPECT_NO_THROW(d.checkUnknownKeys()) << type;
+    }
     // A transfer map with a key of another transfer names the keys of its own.
     const Dictionary pic =
         Dictionary::fromString("kernel: linear\ntransfer: {type: pic, ratio: 0.9}", "schemes");
