@@ -3,6 +3,7 @@
 // `elasticity: hypoelastic` where it takes that key), keeps the contract of Material<dim>: no
 // stress at rest, objectivity, a non-finite stress reported, and a restart that loses nothing.
 // A new material needs no test of its own here.
+#include "MaterialTestSupport.hpp"
 #include "case/Registry.hpp"
 #include "core/KeySchema.hpp"
 #include "io/ParticleIO.hpp"
@@ -46,18 +47,9 @@ std::vector<std::pair<std::string, std::string>> examples() {
 
 /// `n` points at rest of material `m`: F = bᵉ = 1, σ = 0, V = V⁰, state declared and initialised.
 template <int dim> Particles<dim> atRest(Material<dim>& m, int n) {
-    Particles<dim> p;
+    Particles<dim> p = test::restingParticles<dim>(n, 1e-6, 1e-6 * m.density(), 0.0);
     m.declareState(p);
-    p.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
-        p.L[i].setZero();
-        p.F[i].setIdentity();
-        p.be[i].setIdentity();
-        p.stress[i].setZero();
-        p.volume0[i] = 1e-6;
-        p.volume[i] = 1e-6;
-        p.mass[i] = 1e-6 * m.density();
-        p.plasticStrain[i] = 0.0;
         p.material[i] = 0;
         m.initialise(p, i, Mat3::Zero());
     }
