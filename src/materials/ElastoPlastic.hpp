@@ -108,6 +108,11 @@ public:
             rhoC_ = transPhase ? rhoC : 0.0;
             gasVolumeFromNeighbourhood_ =
                 dict.getWordOr("gasVolume", "point", {"point", "neighbourhood"}) == "neighbourhood";
+            if (gasVolumeFromNeighbourhood_ && rhoC_ <= 0.0)
+                dict.error("gasVolume",
+                           "gasVolume: neighbourhood acts on gasified points and needs "
+                           "the trans-phase relation (transPhase: true, "
+                           "criticalDensity > 0)");
         }
     }
 

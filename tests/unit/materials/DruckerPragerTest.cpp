@@ -530,6 +530,11 @@ TEST(DruckerPrager, GasVolumeNeighbourhoodTakesTheNeighbourhoodsDensity) {
                   .find("gasified volume from the neighbourhood's density"),
               std::string::npos);
     EXPECT_EQ(catchInputError([] { create<3>("gasVolume: grains\n"); }).key(), "gasVolume");
+    // Without the trans-phase relation there is no gasified point to act on: an error, not a
+    // key that silently does nothing.
+    EXPECT_EQ(
+        catchInputError([] { create<3>("gasVolume: neighbourhood\ntransPhase: false\n"); }).key(),
+        "gasVolume");
 }
 
 TEST(DruckerPrager, BatchResultsDoNotDependOnNeighbours) {
