@@ -3,7 +3,9 @@
 
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "transfers/PhaseDensity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -105,6 +107,9 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
     localPoints_.clear();
     localForces_.clear();
     numContacts_ = 0;
+    std::vector<int>* nearBody = nearBody_ ? &p.flag(*nearBody_) : nullptr;
+    if (nearBody != nullptr) std::fill(nearBody->begin(), nearBody->end(), 0);
+    const double band = nearBody != nullptr ? NearBodyCells * grid.h() : 0.0;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];
@@ -113,11 +118,12 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
         const double reach = searchReach(law);
         const PeriodicLattice<dim>* images = imagesFor(body, reach);
         // Narrow phase in parallel over the broad phase's points, kept in their order.
-        nearPoints(body, images, p, reach, sort, grid);
+        nearPoints(body, images, p, reach + band, sort, grid);
         contacts_.clear();
         for (std::size_t k = 0; k < near_.size(); ++k) {
             const Index i = near_[k];
             const double rp = law.contactRadius(radius(p.volume0[i]));
+            if (nearBody != nullptr && phi_[k] < rp + band) (*nearBody)[i] = 1;
             if (phi_[k] >= rp) {
                 slip[i] = 0; // out of contact: the slip history restarts
                 continue;
@@ -265,6 +271,8 @@ void Coupling<dim>::declareState(Particles<dim>& p,
     for (const auto& law : laws_)
         coupled += law != nullptr;
     slip_.assign(laws_.size(), 0);
+    if (coupled > 0 && findTransPhaseFields(p)) // read by the gas volumes' relaxation
+        nearBody_ = p.addFlag(FieldInfo{"nearBody", false, false});
     for (std::size_t b = 0; b < laws_.size(); ++b)
         if (laws_[b])
             slip_[b] = p.addScalar(

@@ -72,7 +72,8 @@ MPM_DETECT(StrainEnergy, double(T::strainEnergy(std::declval<const ElasticConsta
 /// A material of elastic law `Law` and plasticity `Plasticity` (see above).
 /// Keys: density, E, nu, the plasticity's keys and, for plastic materials, transPhase (default
 /// true), criticalDensity ρ_c [kg/m³] (default: density, the initial density [000 §3.1]) and
-/// gasVolume (point | neighbourhood, default point: TransPhaseRule::relaxGasVolumes).
+/// gasVolume (neighbourhood | point, default neighbourhood with the trans-phase relation:
+/// TransPhaseRule::relaxGasVolumes).
 template <int dim, class Law, class Plasticity> class ElastoPlastic : public Material<dim> {
     static_assert(detect::Plastic<Plasticity>::value,
                   "a Plasticity needs `static constexpr bool plastic` (see NoPlasticity)");
@@ -107,7 +108,8 @@ public:
                 dict.getScalarOr("criticalDensity", this->density(), Bounds::nonNegative());
             rhoC_ = transPhase ? rhoC : 0.0;
             gasVolumeFromNeighbourhood_ =
-                dict.getWordOr("gasVolume", "point", {"point", "neighbourhood"}) == "neighbourhood";
+                dict.getWordOr("gasVolume", rhoC_ > 0.0 ? "neighbourhood" : "point",
+                               {"point", "neighbourhood"}) == "neighbourhood";
             if (gasVolumeFromNeighbourhood_ && rhoC_ <= 0.0)
                 dict.error("gasVolume",
                            "gasVolume: neighbourhood acts on gasified points and needs "
@@ -136,7 +138,7 @@ public:
         }
         const Index bad =
             Law::update(p, ids, dt, c_, phase, plasticity_.flow(dt), plasticity_.cutoff());
-        if (gasVolumeFromNeighbourhood_) phase.relaxGasVolumes(p, ids);
+        if (gasVolumeFromNeighbourhood_) phase.relaxGasVolumes(p, ids, nearBodyFlag(p));
         return bad;
     }
     double defaultK0() const override { return plasticity_.defaultK0(c_); }
@@ -160,8 +162,10 @@ public:
             os << "    K0 of a geostatic initial stress (1 - sin phi) = " << defaultK0() << '\n';
             if (rhoC_ > 0.0)
                 os << "    trans-phase: critical density " << rhoC_ << " kg/m3, gasified volume "
-                   << (gasVolumeFromNeighbourhood_ ? "from the neighbourhood's density"
-                                                   : "kept by each point")
+                   << (gasVolumeFromNeighbourhood_
+                           ? "from the neighbourhood's density (not within 6 cells of a "
+                             "body)"
+                           : "kept by each point")
                    << '\n';
             else
                 os << "    trans-phase: off\n";

@@ -76,20 +76,26 @@ struct TransPhaseRule {
         return g;
     }
 
-    /// With `gasVolume: neighbourhood`: a gasified point takes its neighbourhood's density,
-    /// V_p = m_p / ρ̄_p, with F scaled by (V_p'/V_p)^(1/dim) so that V_p = det F V⁰ still
-    /// holds. Grains out of contact keep no memory of the sub-cell volume their point's path gave
-    /// them; without this a loose pocket caged by dense neighbours stays a little below ρ_c for
-    /// good, because the neighbours hold the grid still (docs/settingsGuide.md, "A gasified
-    /// point's volume"). Mass and momentum are untouched.
+    /// With `gasVolume: neighbourhood` (the default): a gasified point takes its neighbourhood's
+    /// density,
+    ///     V_p ← m_p / ρ̄_p,   F ← (V_p'/V_p)^(1/dim) F   (V_p = det F V⁰ kept).
+    /// Grains out of contact keep no memory of the sub-cell volume their point's path gave them;
+    /// without this a loose pocket caged by dense neighbours stays a little below ρ_c for good,
+    /// because the neighbours hold the grid still. A point marked in `nearBody` (within
+    /// Coupling::NearBodyCells cells of a coupled body) keeps its volume: the gap a body's
+    /// motion opens is real, and the body's work in closing it again is the bed's damping
+    /// (docs/settingsGuide.md, "A gasified point's volume"). Mass and momentum are untouched.
     template <int dim>
-    void relaxGasVolumes(Particles<dim>& p, const std::vector<Index>& ids) const {
+    void relaxGasVolumes(Particles<dim>& p, const std::vector<Index>& ids,
+                         const int* nearBody) const {
         if (density == nullptr || gasified == nullptr) return;
         const Index n = static_cast<Index>(ids.size());
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index k = 0; k < n; ++k) {
             const Index i = ids[k];
-            if (gasified[i] == 0 || !(density[i] > 0.0)) continue;
+            if (gasified[i] == 0 || !(density[i] > 0.0) ||
+                (nearBody != nullptr && nearBody[i] != 0))
+                continue;
             const double v = p.mass[i] / density[i];
             p.F[i] *= std::pow(v / p.volume[i], 1.0 / dim);
             p.volume[i] = v;

@@ -21,9 +21,9 @@ inline KeyList granularKeys() {
             {"transPhase", "bool", "-", "true", "trans-phase gasification [000 Eq. 10] on/off"},
             {"criticalDensity", "scalar", "kg/m³", "density",
              "ρ_c (≥ 0): a point whose neighbourhood density is below it is gasified"},
-            {"gasVolume", "word", "-", "point",
-             "a gasified point's volume: point (its own) or neighbourhood (m_p/ρ̄_p: resting "
-             "deposits carry their weight)"}};
+            {"gasVolume", "word", "-", "neighbourhood",
+             "a gasified point's volume: neighbourhood (m_p/ρ̄_p, not next to bodies: resting "
+             "deposits carry their weight) or point (its own); point without trans-phase"}};
 }
 
 } // namespace mpm

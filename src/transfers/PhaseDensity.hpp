@@ -34,6 +34,14 @@ template <int dim> std::optional<TransPhaseFields> findTransPhaseFields(const Pa
     return TransPhaseFields{*density, *gasified};
 }
 
+/// The `nearBody` flag a coupling with bodies keeps for the trans-phase relation (1: within two
+/// cells of a coupled body's surface this step; contact/Coupling.cpp), or null without one.
+template <int dim> const int* nearBodyFlag(const Particles<dim>& p) {
+    for (const auto& f : p.flags)
+        if (f.info.name == "nearBody") return f.data.data();
+    return nullptr;
+}
+
 /// The density that decides the trans-phase state [000 Eq. 10, 18]: the neighbourhood's mass
 /// over its volume, through the grid,
 ///

@@ -4,6 +4,7 @@
 
 #include "TestSupport.hpp"
 #include "levelset/LevelSetFile.hpp"
+#include "transfers/PhaseDensity.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace mpm {
@@ -232,6 +234,50 @@ TEST(Coupling, GasifiedPointsTakeTheirForceLocallyOrThroughTheGrid) {
             Dictionary::fromString("{type: barrier, gasifiedPoints: points}", "test"), H);
     });
     EXPECT_NE(std::string(e.what()).find("gasifiedPoints"), std::string::npos);
+}
+
+TEST(Coupling, MarksThePointsNearABodyForTheTransPhaseRelation) {
+    // With the trans-phase fields declared, `nearBody` is 1 exactly where φ < r_p + b,
+    // b = NearBodyCells h (a search over all points), in 2D and 3D, and absent without them.
+    const auto check = [](auto dimTag, const std::string& bodyYaml) {
+        constexpr int dim = decltype(dimTag)::value;
+        SCOPED_TRACE(bodyYaml);
+        const Grid<dim> grid = unitGrid<dim>();
+        auto bodies = oneBody<dim>(bodyYaml);
+        Particles<dim> p = randomCloud<dim>(grid, *bodies[0], 4000, 5, nullptr);
+        const double band = Coupling<dim>::NearBodyCells * H; // 0.3 m
+        std::mt19937_64 rng(7); // every point uniform over [0.05, 0.95]^dim
+        std::uniform_real_distribution<double> u(0.05, 0.95);
+        for (auto& x : p.x)
+            for (int d = 0; d < dim; ++d)
+                x[d] = u(rng);
+        Particles<dim> none = p;
+        transPhaseFields(p);
+        const std::string law = "{type: barrier}";
+        coupleOnce<dim>(law, p, bodies, grid, nullptr);
+        const int* near = nearBodyFlag(p);
+        ASSERT_NE(near, nullptr);
+        std::vector<std::unique_ptr<CouplingLaw<dim>>> laws;
+        laws.push_back(CouplingLaw<dim>::create(Dictionary::fromString(law, "test"), H));
+        Index marked = 0, beyond = 0;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            Vec<dim> n;
+            const double phi = bodies[0]->distance(p.x[i], n);
+            const double rp = laws[0]->contactRadius(std::pow(p.volume0[i], 1.0 / dim));
+            const bool expected = phi < rp + band;
+            EXPECT_EQ(near[i], expected ? 1 : 0) << i << " phi " << phi;
+            marked += expected;
+            beyond += phi >= rp + band && phi < rp + band + 2 * H;
+        }
+        EXPECT_GT(marked, 200);
+        EXPECT_GT(beyond, 200);
+        coupleOnce<dim>(law, none, bodies, grid, nullptr);
+        EXPECT_EQ(nearBodyFlag(none), nullptr);
+    };
+    check(std::integral_constant<int, 2>(),
+          "shape: {type: disk, radius: 0.05}\ndensity: 1\nposition: [0.52, 0.47]\n");
+    check(std::integral_constant<int, 3>(),
+          "shape: {type: sphere, radius: 0.05}\ndensity: 1\nposition: [0.52, 0.47, 0.5]\n");
 }
 
 TEST(CouplingBroadPhase, SphereMatchesBruteForce2D) {

@@ -495,43 +495,50 @@ TEST(DruckerPrager, GasifiedPointsCarryNoStress) {
     EXPECT_EQ(p.stress[0], Mat3::Zero());
 }
 
-TEST(DruckerPrager, GasVolumeNeighbourhoodTakesTheNeighbourhoodsDensity) {
-    // ρ̄_p (the `phaseDensity` field) of 1400 and 1590 kg/m³ gasify points 0 and 1 (ρ_c = 1600);
-    // 1600 and 1700 keep points 2 and 3 dense. Own volumes differ from m_p/ρ̄_p on purpose.
-    const double rhoBar[4] = {1400.0, 1590.0, 1600.0, 1700.0};
+TEST(DruckerPrager, GasVolumeTakesTheNeighbourhoodsDensityAwayFromBodies) {
+    // ρ_c = 1600. Points 0, 1, 4 are gasified (ρ̄_p, the `phaseDensity` field, below ρ_c),
+    // 2 and 3 dense. Own densities m_p/V_p: 0 and 4 looser than their neighbourhood, 1 denser;
+    // 4 next to a body.
+    const double rhoBar[5] = {1590.0, 1400.0, 1600.0, 1700.0, 1590.0};
+    const double rhoOwn[5] = {1500.0, 1595.0, 1550.0, 1650.0, 1500.0};
     const auto run = [&](const std::string& extra) {
-        Particles<3> p = makeParticles<3>(4);
+        Particles<3> p = makeParticles<3>(5);
         const auto m = create<3>(extra);
         m->declareState(p);
         const TransPhaseFields f = transPhaseFields(p);
-        for (int i = 0; i < 4; ++i) {
+        const std::size_t near = p.addFlag(FieldInfo{"nearBody", false, false});
+        p.flag(near)[4] = 1; // next to a body (contact/Coupling.cpp)
+        for (int i = 0; i < 5; ++i) {
             p.scalar(f.density)[i] = rhoBar[i];
-            p.volume[i] = 1e-3 * (0.97 + 0.02 * i);
+            p.volume[i] = p.mass[i] / rhoOwn[i];
             p.F[i] = std::cbrt(p.volume[i] / p.volume0[i]) * Mat<3>::Identity();
         }
-        EXPECT_EQ(m->updateStress(p, allIds(4), 1e-4), -1);
-        EXPECT_EQ(p.flag(f.gasified)[0] + p.flag(f.gasified)[1], 2);
-        EXPECT_EQ(p.flag(f.gasified)[2] + p.flag(f.gasified)[3], 0);
+        EXPECT_EQ(m->updateStress(p, allIds(5), 1e-4), -1);
+        for (int i = 0; i < 5; ++i)
+            EXPECT_EQ(p.flag(f.gasified)[i], rhoBar[i] < 1600.0 ? 1 : 0) << i;
         return p;
     };
-    const Particles<3> n = run("gasVolume: neighbourhood\n");
-    for (int i = 0; i < 2; ++i) { // gasified: V = m/ρ̄, V = det F V⁰, no stress
+    const auto own = [&](const Particles<3>& p, int i) { return p.mass[i] / rhoOwn[i]; };
+    const Particles<3> n = run(""); // the default, `neighbourhood`
+    for (int i : {0, 1}) { // gas, looser or denser than ρ̄: V = m/ρ̄, V = det F V⁰, no stress
         EXPECT_NEAR(n.volume[i], n.mass[i] / rhoBar[i], 1e-15) << i;
         EXPECT_NEAR(n.F[i].determinant() * n.volume0[i], n.volume[i], 1e-15) << i;
         EXPECT_EQ(n.stress[i], Mat3::Zero()) << i;
     }
-    for (int i = 2; i < 4; ++i) // dense: untouched
-        EXPECT_EQ(n.volume[i], 1e-3 * (0.97 + 0.02 * i)) << i;
-    const Particles<3> o = run(""); // the default, `point`: every volume kept
-    for (int i = 0; i < 4; ++i)
-        EXPECT_EQ(o.volume[i], 1e-3 * (0.97 + 0.02 * i)) << i;
-    EXPECT_NE(create<3>("gasVolume: neighbourhood\n")
-                  ->describe()
-                  .find("gasified volume from the neighbourhood's density"),
+    for (int i : {2, 3, 4}) // dense, or gas next to a body: kept
+        EXPECT_EQ(n.volume[i], own(n, i)) << i;
+    const Particles<3> o = run("gasVolume: point\n"); // every volume kept
+    for (int i = 0; i < 5; ++i)
+        EXPECT_EQ(o.volume[i], own(o, i)) << i;
+    EXPECT_NE(create<3>("")->describe().find("from the neighbourhood's density"),
+              std::string::npos);
+    EXPECT_NE(create<3>("gasVolume: point\n")->describe().find("kept by each point"),
               std::string::npos);
     EXPECT_EQ(catchInputError([] { create<3>("gasVolume: grains\n"); }).key(), "gasVolume");
-    // Without the trans-phase relation there is no gasified point to act on: an error, not a
-    // key that silently does nothing.
+    // Without the trans-phase relation there is no gasified point to act on: the default is
+    // `point`, and `neighbourhood` an error, not a key that silently does nothing.
+    EXPECT_NE(create<3>("transPhase: false\n")->describe().find("trans-phase: off"),
+              std::string::npos);
     EXPECT_EQ(
         catchInputError([] { create<3>("gasVolume: neighbourhood\ntransPhase: false\n"); }).key(),
         "gasVolume");
