@@ -109,7 +109,7 @@ void Coupling<dim>::computeForces(Particles<dim>& p,
     numContacts_ = 0;
     std::vector<int>* nearBody = nearBody_ ? &p.flag(*nearBody_) : nullptr;
     if (nearBody != nullptr) std::fill(nearBody->begin(), nearBody->end(), 0);
-    const double band = nearBody != nullptr ? NearBodyCells * grid.h() : 0.0;
+    const double band = nearBody != nullptr ? nearBodyCells * grid.h() : 0.0;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         if (!laws_[b]) continue;
         RigidBody<dim>& body = *bodies[b];

@@ -39,14 +39,6 @@ namespace mpm {
 /// none of this runs.
 template <int dim> class Coupling {
 public:
-    /// Points within NearBodyCells cells of a body's contact surface are marked in the
-    /// `nearBody` flag (with the trans-phase relation): their gas keeps its volume
-    /// (materials/FlowRules.hpp, TransPhaseRule::relaxGasVolumes). Measured
-    /// (docs/settingsGuide.md): with 2 cells a dropped sphere sinks (the band's loose edge
-    /// spreads outwards as its neighbours take its density); 4 and 6 let a dropped sphere and
-    /// rock rest as with [000]'s rule, 6 with its margins.
-    static constexpr double NearBodyCells = 6.0;
-
     /// `laws[b]` is body b's law (nullptr: not coupled); `lattice` the periodic faces (none:
     /// nullptr, or a lattice with no periodic axis).
     explicit Coupling(std::vector<std::unique_ptr<CouplingLaw<dim>>> laws,
@@ -147,8 +139,10 @@ private:
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
     const PeriodicLattice<dim>* lattice_; ///< null without periodic faces
-    std::optional<std::size_t> nearBody_; ///< handle of the `nearBody` flag, if kept
-    std::vector<std::size_t> slip_;       ///< per body: handle of its slip field in the particles
+    /// Handle of the `nearBody` flag (points within nearBodyCells cells of a body, with the
+    /// trans-phase relation: transfers/PhaseDensity.hpp), if kept.
+    std::optional<std::size_t> nearBody_;
+    std::vector<std::size_t> slip_; ///< per body: handle of its slip field in the particles
     std::vector<Index> near_;
     std::vector<double> phi_;
     std::vector<Vec<dim>> normals_;

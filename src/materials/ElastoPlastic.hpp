@@ -163,9 +163,10 @@ public:
             if (rhoC_ > 0.0)
                 os << "    trans-phase: critical density " << rhoC_ << " kg/m3, gasified volume "
                    << (gasVolumeFromNeighbourhood_
-                           ? "from the neighbourhood's density (not within 6 cells of a "
-                             "body)"
-                           : "kept by each point")
+                           ? "from the neighbourhood's density (not within " +
+                                 std::to_string(static_cast<int>(nearBodyCells)) +
+                                 " cells of a body)"
+                           : std::string("kept by each point"))
                    << '\n';
             else
                 os << "    trans-phase: off\n";

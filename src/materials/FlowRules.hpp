@@ -82,8 +82,8 @@ struct TransPhaseRule {
     /// Grains out of contact keep no memory of the sub-cell volume their point's path gave them;
     /// without this a loose pocket caged by dense neighbours stays a little below ρ_c for good,
     /// because the neighbours hold the grid still. A point marked in `nearBody` (within
-    /// Coupling::NearBodyCells cells of a coupled body) keeps its volume: the gap a body's
-    /// motion opens is real, and the body's work in closing it again is the bed's damping
+    /// nearBodyCells cells of a coupled body, transfers/PhaseDensity.hpp) keeps its volume: the gap
+    /// a body's motion opens is real, and the body's work in closing it again is the bed's damping
     /// (docs/settingsGuide.md, "A gasified point's volume"). Mass and momentum are untouched.
     template <int dim>
     void relaxGasVolumes(Particles<dim>& p, const std::vector<Index>& ids,

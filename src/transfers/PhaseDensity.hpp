@@ -34,8 +34,16 @@ template <int dim> std::optional<TransPhaseFields> findTransPhaseFields(const Pa
     return TransPhaseFields{*density, *gasified};
 }
 
-/// The `nearBody` flag a coupling with bodies keeps for the trans-phase relation (1: within two
-/// cells of a coupled body's surface this step; contact/Coupling.cpp), or null without one.
+/// The width of the band next to a coupled body, in cells, whose gasified points keep their
+/// own volume (TransPhaseRule::relaxGasVolumes). Measured (docs/settingsGuide.md): with 2 cells
+/// a dropped sphere sinks (the band's loose edge spreads outwards as its neighbours take its
+/// density); 4 and 6 let a dropped sphere and rock rest as with [000]'s rule, 6 with its
+/// margins.
+constexpr double nearBodyCells = 6.0;
+
+/// The `nearBody` flag a coupling with bodies keeps for the trans-phase relation (1: within
+/// nearBodyCells cells of a coupled body's surface this step; contact/Coupling.cpp), or null
+/// without one.
 template <int dim> const int* nearBodyFlag(const Particles<dim>& p) {
     for (const auto& f : p.flags)
         if (f.info.name == "nearBody") return f.data.data();

@@ -238,15 +238,15 @@ TEST(Coupling, GasifiedPointsTakeTheirForceLocallyOrThroughTheGrid) {
 
 TEST(Coupling, MarksThePointsNearABodyForTheTransPhaseRelation) {
     // With the trans-phase fields declared, `nearBody` is 1 exactly where φ < r_p + b,
-    // b = NearBodyCells h (a search over all points), in 2D and 3D, and absent without them.
+    // b = nearBodyCells h (a search over all points), in 2D and 3D, and absent without them.
     const auto check = [](auto dimTag, const std::string& bodyYaml) {
         constexpr int dim = decltype(dimTag)::value;
         SCOPED_TRACE(bodyYaml);
         const Grid<dim> grid = unitGrid<dim>();
         auto bodies = oneBody<dim>(bodyYaml);
         Particles<dim> p = randomCloud<dim>(grid, *bodies[0], 4000, 5, nullptr);
-        const double band = Coupling<dim>::NearBodyCells * H; // 0.3 m
-        std::mt19937_64 rng(7); // every point uniform over [0.05, 0.95]^dim
+        const double band = nearBodyCells * H; // 0.3 m
+        std::mt19937_64 rng(7);                // every point uniform over [0.05, 0.95]^dim
         std::uniform_real_distribution<double> u(0.05, 0.95);
         for (auto& x : p.x)
             for (int d = 0; d < dim; ++d)
