@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
+#include <string>
 
 namespace mpm {
 
@@ -26,6 +28,30 @@ template <int dim> std::pair<double, Vec<dim>> largestStretch(const Mat<dim>& d)
 }
 
 } // namespace
+
+template <int dim>
+std::unique_ptr<ParticleSplitting<dim>>
+ParticleSplitting<dim>::create(const Dictionary& schemes, bool granular, Particles<dim>& p) {
+    if (!schemes.has("splitting")) {
+        if (!granular) return nullptr;
+        auto s = std::make_unique<ParticleSplitting>(GranularMaxStretch, p);
+        s->byDefault_ = true;
+        return s;
+    }
+    if (!schemes.isDict("splitting")) {
+        const std::string w = schemes.getString("splitting");
+        if (w == "off" || w == "false" || w == "no") return nullptr;
+        schemes.error("splitting",
+                      "expected off or a map, e.g. splitting: {maxStretch: 4}; got '" + w + "'");
+    }
+    const Dictionary sd = schemes.subDict("splitting");
+    auto s = std::make_unique<ParticleSplitting>(
+        sd.getScalar("maxStretch",
+                     Bounds{1.0, std::numeric_limits<double>::infinity(), false, true}),
+        p);
+    sd.checkUnknownKeys();
+    return s;
+}
 
 template <int dim>
 ParticleSplitting<dim>::ParticleSplitting(double maxStretch, Particles<dim>& p)

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "case/Dictionary.hpp"
 #include "parallel/Comm.hpp"
 #include "particles/Particles.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace mpm {
@@ -39,8 +41,18 @@ public:
     /// Deepest lineage: a point split this often is not split again (V⁰ 2⁻⁴⁰ of its seed's).
     static constexpr int MaxLevel = 40;
 
+    /// Stretch at which a granular material's points split when the schemes do not say.
+    static constexpr double GranularMaxStretch = 4.0;
+
     /// `maxStretch` > 1: the principal stretch of the domain beyond which a point is split.
     ParticleSplitting(double maxStretch, Particles<dim>& p);
+
+    /// The splitting `system/mpmSchemes` selects: `splitting: {maxStretch: s}`, or
+    /// `splitting: off`; absent, on with maxStretch 4 when the scene has a granular material
+    /// (`granular`: one with the trans-phase relation, whose flows stretch and whose deposits
+    /// must fill their volume) and off otherwise. Returns null when off.
+    static std::unique_ptr<ParticleSplitting> create(const Dictionary& schemes, bool granular,
+                                                     Particles<dim>& p);
 
     /// Split every point whose domain is stretched beyond maxStretch (children appended in
     /// index order, so the result does not depend on the thread count). Collective: every rank
@@ -51,9 +63,12 @@ public:
     const std::vector<int>& levels(const Particles<dim>& p) const { return p.flag(level_); }
 
     double maxStretch() const { return maxStretch_; }
+    /// True when the schemes did not name `splitting` (the granular default).
+    bool byDefault() const { return byDefault_; }
 
 private:
     double maxStretch_;
+    bool byDefault_ = false;
     std::size_t domain_; ///< Particles::tensor handle of S − 1
     std::size_t level_;  ///< Particles::flag handle of k
     std::vector<char> split_;

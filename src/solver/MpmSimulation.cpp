@@ -65,16 +65,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
             phaseDensity_->setNodalFold(
                 [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
     }
-    if (schemes.isDict("splitting")) {
-        const Dictionary sd = schemes.subDict("splitting");
-        splitting_ = std::make_unique<ParticleSplitting<dim>>(
-            sd.getScalar("maxStretch",
-                         Bounds{1.0, std::numeric_limits<double>::infinity(), false, true}),
-            particles_);
-        sd.checkUnknownKeys();
-    } else if (schemes.has("splitting")) {
-        schemes.error("splitting", "expected a map, e.g. splitting: {maxStretch: 2}");
-    }
+    splitting_ = ParticleSplitting<dim>::create(schemes, phaseDensity_ != nullptr, particles_);
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);

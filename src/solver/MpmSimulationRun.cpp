@@ -34,7 +34,11 @@ template <int dim> void MpmSimulation<dim>::logDerivedConstants() const {
     }
     if (splitting_)
         os << "Particle splitting: a point splits in two when its domain is stretched beyond "
-           << splitting_->maxStretch() << '\n';
+           << splitting_->maxStretch()
+           << (splitting_->byDefault() ? " (the default with a granular material; splitting: off "
+                                         "to disable)"
+                                       : "")
+           << '\n';
     log() << os.str() << '\n';
 }
 

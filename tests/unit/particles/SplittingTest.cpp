@@ -4,6 +4,8 @@
 // the limit splits nothing; the halves are not split again until they are stretched again.
 #include "particles/Splitting.hpp"
 
+#include "TestSupport.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -33,6 +35,36 @@ template <int dim> Particles<dim> onePoint(const Mat<dim>& F, Index id = 7) {
     p.id[0] = id;
     p.material[0] = 0;
     return p;
+}
+
+/// `splitting` in system/mpmSchemes: a map sets maxStretch, `off` disables, and absent the
+/// splitting is on (maxStretch 4) exactly when the scene has a granular material.
+TEST(Splitting, SchemesSelectTheSplittingAndGranularScenesSplitByDefault) {
+    const auto make = [](const std::string& text, bool granular) {
+        Particles<2> p = onePoint<2>(Mat<2>::Identity());
+        return ParticleSplitting<2>::create(Dictionary::fromString(text, "system/mpmSchemes"),
+                                            granular, p);
+    };
+    const auto byDefault = make("kernel: linear", true);
+    ASSERT_NE(byDefault, nullptr);
+    EXPECT_EQ(byDefault->maxStretch(), 4.0);
+    EXPECT_TRUE(byDefault->byDefault());
+    EXPECT_EQ(make("kernel: linear", false), nullptr);
+    EXPECT_EQ(make("splitting: off", true), nullptr);
+    EXPECT_EQ(make("splitting: false", true), nullptr);
+    const auto given = make("splitting: {maxStretch: 2.5}", false);
+    ASSERT_NE(given, nullptr);
+    EXPECT_EQ(given->maxStretch(), 2.5);
+    EXPECT_FALSE(given->byDefault());
+
+    const std::string on = test::catchInputError([&] { make("splitting: on", true); }).what();
+    EXPECT_NE(on.find("expected off or a map"), std::string::npos) << on;
+    const std::string one =
+        test::catchInputError([&] { make("splitting: {maxStretch: 1}", true); }).what();
+    EXPECT_NE(one.find("maxStretch"), std::string::npos) << one;
+    const std::string typo =
+        test::catchInputError([&] { make("splitting: {maxStrech: 4}", true); }).what();
+    EXPECT_NE(typo.find("maxStre"), std::string::npos) << typo;
 }
 
 TEST(Splitting, StretchedPointBecomesTwoHalvesAlongTheStretch) {
