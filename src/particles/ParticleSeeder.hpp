@@ -4,6 +4,7 @@
 #include "case/Dictionary.hpp"
 #include "grid/Grid.hpp"
 #include "materials/Material.hpp"
+#include "particles/InitialStress.hpp"
 #include "particles/Particles.hpp"
 
 #include <functional>
@@ -11,14 +12,6 @@
 #include <vector>
 
 namespace mpm {
-
-/// Gravity preload stage [000 §4.2] (`initialStress: {type: gravityPreload, …}` of a set).
-struct PreloadSettings {
-    bool requested = false;
-    double damping = 0.5;    ///< local damping during the preload
-    double tolerance = 1e-4; ///< stop when E_k ≤ tolerance · peak E_k
-    long maxSteps = 20000;
-};
 
 /// Seeds the particle sets of constant/particles: each set's region (regular or Poisson-disk
 /// seeding), material, initial velocity (a vector, `{type: uniform, value}` or an axial mode

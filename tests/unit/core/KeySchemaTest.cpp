@@ -110,7 +110,10 @@ TEST(KeySchema, EveryFamilyOfTheSolverIsInTheCatalogue) {
                                          "kernels",
                                          "transfers",
                                          "stressUpdateOrders",
-                                         "antiLocking"};
+                                         "antiLocking",
+                                         "initialVelocity",
+                                         "initialStress",
+                                         "seedingMethods"};
     EXPECT_EQ(names, expected);
 }
 
