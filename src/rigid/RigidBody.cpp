@@ -29,70 +29,13 @@ Vec3 readVec3(const Dictionary& dict, const std::string& key) {
     return readVec<3>(dict, key);
 }
 
-/// Number of angular-velocity components: 3 in 3D, 1 (about z) in 2D.
-template <int dim> constexpr int nOmega() {
-    return dim == 3 ? 3 : 1;
-}
-
-/// Velocity and world angular velocity of a prescribed motion at time t: linear interpolation
-/// in the rows (t, v…, ω…) sorted by time, held constant beyond the first and last rows.
-template <int dim>
-void interpolate(const std::vector<std::vector<double>>& table, double t, Vec<dim>& v,
-                 Vec3& omega) {
-    std::size_t i0 = 0;
-    std::size_t i1 = 0;
-    double w = 0.0; // weight of row i1
-    if (t <= table.front()[0]) {
-        i0 = i1 = 0;
-    } else if (t >= table.back()[0]) {
-        i0 = i1 = table.size() - 1;
-    } else {
-        i1 = 1;
-        while (table[i1][0] < t)
-            ++i1; // rows are strictly increasing in time
-        i0 = i1 - 1;
-        w = (t - table[i0][0]) / (table[i1][0] - table[i0][0]);
-    }
-    const auto at = [&](std::size_t c) { return (1.0 - w) * table[i0][c] + w * table[i1][c]; };
-    for (int d = 0; d < dim; ++d)
-        v[d] = at(1 + d);
-    omega.setZero();
-    if constexpr (dim == 3) {
-        for (int d = 0; d < 3; ++d)
-            omega[d] = at(1 + dim + d);
-    } else {
-        omega[2] = at(1 + dim);
-    }
-}
-
 } // namespace
 
 template <int dim>
 RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std::move(name)) {
     shape_ = Shape<dim>::create(dict.subDict("shape"));
 
-    // Motion: a word (free | fixed) or a map {type: free | fixed | prescribed | driven, …}.
-    const std::vector<std::string> motions{"free", "fixed", "prescribed", "driven"};
-    std::string motionName = "free";
-    if (dict.isDict("motion")) {
-        const Dictionary m = dict.subDict("motion");
-        motionName = m.getWord("type", motions);
-        if (motionName == "prescribed" || motionName == "driven") {
-            readMotionTable(m, motionName == "prescribed");
-        }
-        m.checkUnknownKeys();
-    } else {
-        motionName = dict.getWordOr("motion", "free", motions);
-        if (motionName == "prescribed" || motionName == "driven") {
-            dict.error("motion", motionName + " motion is a map: {type: prescribed, velocity: "
-                                              "…, angularVelocity: …}, {type: driven, "
-                                              "angularVelocity: …} or either with a table");
-        }
-    }
-    motion_ = motionName == "fixed"        ? Motion::Fixed
-              : motionName == "prescribed" ? Motion::Prescribed
-              : motionName == "driven"     ? Motion::Driven
-                                           : Motion::Free;
+    motion_ = BodyMotion<dim>::create(dict);
 
     // Mass properties: density ρ or mass m, exactly one. I = ρ · unitInertia.
     const bool hasDensity = dict.has("density");
@@ -142,86 +85,8 @@ RigidBody<dim>::RigidBody(const Dictionary& dict, std::string name) : name_(std:
     updateRotation();
 
     // Twist: v^{-½} and ω^{-½} (world frame in the file, body axes inside).
-    if (motion_ == Motion::Driven) {
-        v_ = dict.has("velocity") ? readVec<dim>(dict, "velocity") : Vec<dim>::Zero();
-        if (dict.has("angularVelocity")) {
-            dict.error("angularVelocity", "not used with motion driven; give it in the motion");
-        }
-        Vec<dim> unused;
-        Vec3 omega;
-        interpolate<dim>(table_, 0.0, unused, omega);
-        setAngularVelocity(omega);
-    } else if (motion_ == Motion::Free) {
-        v_ = dict.has("velocity") ? readVec<dim>(dict, "velocity") : Vec<dim>::Zero();
-        Vec3 omega = Vec3::Zero();
-        if constexpr (dim == 3) {
-            if (dict.has("angularVelocity")) omega = readVec3(dict, "angularVelocity");
-        } else {
-            omega[2] = dict.getScalarOr("angularVelocity", 0.0);
-        }
-        setAngularVelocity(omega);
-    } else {
-        for (const char* key : {"velocity", "angularVelocity"}) {
-            if (dict.has(key)) {
-                dict.error(key, std::string("not used with motion ") + motionName +
-                                    (motion_ == Motion::Fixed
-                                         ? " (a fixed body never moves)"
-                                         : "; give it in the prescribed motion instead"));
-            }
-        }
-        if (motion_ == Motion::Prescribed) {
-            Vec3 omega;
-            interpolate<dim>(table_, 0.0, v_, omega);
-            setAngularVelocity(omega);
-        }
-    }
+    motion_->start(dict, *this);
     dict.checkUnknownKeys();
-}
-
-template <int dim> void RigidBody<dim>::readMotionTable(const Dictionary& m, bool withVelocity) {
-    // Rows are stored as (t, v…, ω…); a driven motion gives (t, ω…) and v is stored as 0.
-    const int nVelocity = withVelocity ? dim : 0;
-    const int columns = 1 + nVelocity + nOmega<dim>();
-    const auto store = [&](const std::vector<double>& row) {
-        std::vector<double> full(row.begin(), row.begin() + 1 + nVelocity);
-        full.resize(1 + dim, 0.0);
-        full.insert(full.end(), row.begin() + 1 + nVelocity, row.end());
-        table_.push_back(full);
-    };
-    if (m.has("table")) {
-        for (const char* key : {"velocity", "angularVelocity"}) {
-            if (m.has(key)) {
-                m.error(key, "give either a table or velocity/angularVelocity, not both");
-            }
-        }
-        const std::vector<std::vector<double>> rows = m.vectorList("table", columns);
-        if (rows.empty()) m.error("table", "the table needs at least one row");
-        for (std::size_t i = 1; i < rows.size(); ++i) {
-            if (!(rows[i][0] > rows[i - 1][0])) {
-                m.error("table", "rows must be sorted by strictly increasing time; row " +
-                                     std::to_string(i) + " (t = " + fullPrecision(rows[i][0]) +
-                                     ") is not after row " + std::to_string(i - 1));
-            }
-        }
-        for (const auto& row : rows)
-            store(row);
-        return;
-    }
-    std::vector<double> row{0.0};
-    if (withVelocity) {
-        const std::vector<double> v = m.getVectorOr("velocity", std::vector<double>(dim, 0.0), dim);
-        row.insert(row.end(), v.begin(), v.end());
-    }
-    if constexpr (dim == 3) {
-        const std::vector<double> w = withVelocity
-                                          ? m.getVectorOr("angularVelocity", {0.0, 0.0, 0.0}, 3)
-                                          : m.getVector("angularVelocity", 3);
-        row.insert(row.end(), w.begin(), w.end());
-    } else {
-        row.push_back(withVelocity ? m.getScalarOr("angularVelocity", 0.0)
-                                   : m.getScalar("angularVelocity"));
-    }
-    store(row);
 }
 
 template <int dim> void RigidBody<dim>::setAngularVelocity(const Vec3& omegaWorld) {
@@ -274,9 +139,10 @@ template <int dim> void RigidBody<dim>::addForceAndTorque(const Vec<dim>& f, con
 }
 
 template <int dim> void RigidBody<dim>::applyImpulse(const Vec<dim>& J, const Vec<dim>& at) {
-    if (motion_ == Motion::Fixed || motion_ == Motion::Prescribed) return;
-    v_ += J / mass_;
-    if (motion_ == Motion::Driven) return; // its rotation is prescribed
+    motion_->applyImpulse(*this, J, at);
+}
+
+template <int dim> void RigidBody<dim>::addAngularImpulse(const Vec<dim>& J, const Vec<dim>& at) {
     const Vec<dim> r = at - x_;
     if constexpr (dim == 3) {
         const Vec3 dL = R_.transpose() * r.cross(J); // angular impulse in body axes
@@ -286,37 +152,38 @@ template <int dim> void RigidBody<dim>::applyImpulse(const Vec<dim>& J, const Ve
     }
 }
 
+template <int dim> void RigidBody<dim>::setVelocities(const Vec<dim>& v, const Vec3& omegaWorld) {
+    v_ = v;
+    setAngularVelocity(omegaWorld);
+}
+
 template <int dim> void RigidBody<dim>::advance(double dt, double t, const Vec<dim>& gravity) {
-    if (motion_ == Motion::Fixed) {
-        v_.setZero();
-        omegaBody_.setZero();
-        alphaPrev_.setZero();
-        return;
-    }
+    motion_->advance(*this, dt, t, gravity);
+}
 
-    if (motion_ == Motion::Prescribed || motion_ == Motion::Driven) {
-        // v^{n+½}, ω^{n+½} from the table at t + Δt/2 (driven: v^{n+½} by central difference
-        // from gravity and the coupling force [004 Eq. 19]); x^{n+1} = x^n + Δt v^{n+½}; the
-        // rotation by the exact exponential of the (world) ω^{n+½} Δt.
-        Vec3 omega;
-        Vec<dim> v;
-        interpolate<dim>(table_, t + 0.5 * dt, v, omega);
-        v_ = motion_ == Motion::Driven ? Vec<dim>(v_ + dt * (f_ / mass_ + gravity)) : v;
-        x_ += dt * v_;
-        if constexpr (dim == 3) {
-            const double angle = omega.norm() * dt;
-            if (angle > 0.0) {
-                q_ = Eigen::Quaterniond(Eigen::AngleAxisd(angle, omega.normalized())) * q_;
-                q_.normalize();
-            }
-        } else {
-            theta_ += dt * omega[2];
+template <int dim> void RigidBody<dim>::hold() {
+    v_.setZero();
+    omegaBody_.setZero();
+    alphaPrev_.setZero();
+}
+
+template <int dim> void RigidBody<dim>::moveWith(const Vec<dim>& v, const Vec3& omega, double dt) {
+    v_ = v;
+    x_ += dt * v_;
+    if constexpr (dim == 3) {
+        const double angle = omega.norm() * dt;
+        if (angle > 0.0) {
+            q_ = Eigen::Quaterniond(Eigen::AngleAxisd(angle, omega.normalized())) * q_;
+            q_.normalize();
         }
-        updateRotation();
-        setAngularVelocity(omega);
-        return;
+    } else {
+        theta_ += dt * omega[2];
     }
+    updateRotation();
+    setAngularVelocity(omega);
+}
 
+template <int dim> void RigidBody<dim>::integrate(double dt, const Vec<dim>& gravity) {
     // Translation by central difference [004 Eq. 19–20]:
     // v^{n+½} = v^{n-½} + Δt (f^n/m + g), x^{n+1} = x^n + Δt v^{n+½}.
     v_ += dt * (f_ / mass_ + gravity);

@@ -3,6 +3,7 @@
 
 #include "case/Dictionary.hpp"
 #include "core/Types.hpp"
+#include "rigid/BodyMotion.hpp"
 #include "rigid/Shape.hpp"
 
 #include <Eigen/Geometry>
@@ -12,14 +13,6 @@
 #include <vector>
 
 namespace mpm {
-
-/// How a body moves (constant/rigidBodies `motion:`).
-enum class Motion {
-    Free,       ///< integrated from gravity and coupling forces
-    Fixed,      ///< never moves (terrain, walls, baffles)
-    Prescribed, ///< velocity and angular velocity given as functions of time
-    Driven      ///< angular velocity given, translation free (a driven wheel)
-};
 
 /// A rigid body [004 §3]: shape, mass properties, pose and twist, and the integrators.
 ///
@@ -45,7 +38,7 @@ public:
 
     const std::string& name() const { return name_; }
     const Shape<dim>& shape() const { return *shape_; }
-    Motion motion() const { return motion_; }
+    Motion motion() const { return motion_->kind(); }
 
     double mass() const { return mass_; }
     /// Principal moments of inertia about the centroid [kg m²] (2D: component 2).
@@ -100,9 +93,30 @@ public:
     }
     const Vec3& torque() const { return torque_; }
 
-    /// Advance pose and twist over dt with gravity g and the accumulated forces; `t` is the
-    /// time at the start of the step (prescribed motion is evaluated at t + dt/2).
+    /// Advance pose and twist over dt with gravity g and the accumulated forces, as the body's
+    /// motion says; `t` is the time at the start of the step (prescribed motion is evaluated
+    /// at t + dt/2).
     void advance(double dt, double t, const Vec<dim>& gravity);
+
+    // The integrators and changes a BodyMotion composes.
+    /// A free body's step: v^{n+½} = v^{n-½} + Δt (f/m + g), x^{n+1} = x^n + Δt v^{n+½}
+    /// [004 Eq. 19–20]; the rotation by Walton–Braun [004 Eq. 21–31] (2D: central difference).
+    void integrate(double dt, const Vec<dim>& gravity);
+    /// A kinematic step with v^{n+½} = v and the world ω^{n+½} = ω: x += Δt v, the rotation by
+    /// the exact exponential of ω Δt.
+    void moveWith(const Vec<dim>& v, const Vec3& omega, double dt);
+    /// The free translation's v^{n+½} = v^{n-½} + Δt (f/m + g) [004 Eq. 19].
+    Vec<dim> freeVelocity(double dt, const Vec<dim>& gravity) const {
+        return v_ + dt * (f_ / mass_ + gravity);
+    }
+    /// At rest: v = ω = α = 0.
+    void hold();
+    /// v += J/m.
+    void addLinearImpulse(const Vec<dim>& J) { v_ += J / mass_; }
+    /// ω += I⁻¹ (r × J), r = at − x.
+    void addAngularImpulse(const Vec<dim>& J, const Vec<dim>& at);
+    /// v and ω (world frame; 2D: component 2) as given.
+    void setVelocities(const Vec<dim>& v, const Vec3& omegaWorld);
 
     /// Kinetic energy ½ m v² + ½ ωᵀ I ω [J].
     double kineticEnergy() const;
@@ -117,7 +131,7 @@ public:
 private:
     std::string name_;
     std::unique_ptr<Shape<dim>> shape_;
-    Motion motion_ = Motion::Free;
+    std::unique_ptr<BodyMotion<dim>> motion_;
     double mass_ = 0;
     Vec3 inertia_ = Vec3::Zero();
 
@@ -132,12 +146,7 @@ private:
     Vec<dim> f_ = Vec<dim>::Zero();
     Vec3 torque_ = Vec3::Zero();
 
-    // Prescribed motion: table rows (t, v…, ω…) — one row for constant motion.
-    std::vector<std::vector<double>> table_;
-
     void updateRotation();
-    /// Rows (t, v…, ω…) of a prescribed motion (withVelocity) or (t, ω…) of a driven one.
-    void readMotionTable(const Dictionary& motion, bool withVelocity);
     /// ω^{n-½} from a world-frame vector (2D: component 2), stored in body axes.
     void setAngularVelocity(const Vec3& omegaWorld);
 };

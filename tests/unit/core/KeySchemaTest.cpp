@@ -113,7 +113,8 @@ TEST(KeySchema, EveryFamilyOfTheSolverIsInTheCatalogue) {
                                          "antiLocking",
                                          "initialVelocity",
                                          "initialStress",
-                                         "seedingMethods"};
+                                         "seedingMethods",
+                                         "bodyMotions"};
     EXPECT_EQ(names, expected);
 }
 
