@@ -279,6 +279,12 @@ void Coupling<dim>::declareState(Particles<dim>& p,
                 {coupled == 1 ? "contactSlip" : "contactSlip_" + bodies[b]->name()}, 0.0);
 }
 
+template <int dim> void Coupling<dim>::keepNearBodyFlag(Particles<dim>& p) {
+    const bool coupled =
+        std::any_of(laws_.begin(), laws_.end(), [](const auto& l) { return l != nullptr; });
+    if (coupled && !nearBody_) nearBody_ = p.addFlag(FieldInfo{"nearBody", false, false});
+}
+
 template <int dim> void Coupling<dim>::setParticles(const Particles<dim>& p, const Comm& comm) {
     maxRadius_ = 0;
     for (double v0 : p.volume0)

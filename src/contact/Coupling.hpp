@@ -51,6 +51,9 @@ public:
     /// two bodies keeps one history with each).
     void declareState(Particles<dim>& p,
                       const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies);
+    /// Keep the `nearBody` flag (declared in `p` if not yet) when a body is coupled: the
+    /// particle splitting leaves the flagged points whole.
+    void keepNearBodyFlag(Particles<dim>& p);
 
     /// Record the largest coupling radius of the particles (call after seeding or restart;
     /// V⁰ never changes, removal only lowers it); over all ranks of `comm`.
@@ -139,8 +142,8 @@ private:
 
     std::vector<std::unique_ptr<CouplingLaw<dim>>> laws_;
     const PeriodicLattice<dim>* lattice_; ///< null without periodic faces
-    /// Handle of the `nearBody` flag (points within nearBodyCells cells of a body, with the
-    /// trans-phase relation: transfers/PhaseDensity.hpp), if kept.
+    /// Handle of the `nearBody` flag (points within nearBodyCells cells of a body, for the
+    /// trans-phase relation and the splitting: transfers/PhaseDensity.hpp), if kept.
     std::optional<std::size_t> nearBody_;
     std::vector<std::size_t> slip_; ///< per body: handle of its slip field in the particles
     std::vector<Index> near_;

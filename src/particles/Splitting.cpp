@@ -60,7 +60,9 @@ ParticleSplitting<dim>::ParticleSplitting(double maxStretch, Particles<dim>& p)
     assert(maxStretch > 1.0 && "ParticleSplitting: maxStretch must exceed 1");
 }
 
-template <int dim> Index ParticleSplitting<dim>::apply(Particles<dim>& p, const Comm& comm) {
+template <int dim>
+Index ParticleSplitting<dim>::apply(Particles<dim>& p, const Comm& comm, double cellSize,
+                                    const int* nearBody) {
     const Index n = static_cast<Index>(p.size());
     const std::vector<Mat3>& s = p.tensor(domain_);
     const std::vector<int>& level = p.flag(level_);
@@ -71,8 +73,13 @@ template <int dim> Index ParticleSplitting<dim>::apply(Particles<dim>& p, const 
     for (Index i = 0; i < n; ++i) {
         const Mat<dim> d = domainOf(p, s, i);
         // σ² ≤ |D|², so most points are passed over without an eigen-solve.
-        if (d.squaredNorm() <= limit2 || level[i] >= MaxLevel) continue;
-        if (largestStretch<dim>(d).first > limit2) {
+        if (d.squaredNorm() <= limit2 || level[i] >= MaxLevel ||
+            (nearBody != nullptr && nearBody[i] != 0))
+            continue;
+        const double sigma2 = largestStretch<dim>(d).first;
+        // The children land σ a/4 away: at most a cell (σ² a² ≤ 16 h²).
+        const double side2 = std::pow(std::ldexp(p.volume0[i], level[i]), 2.0 / dim);
+        if (sigma2 > limit2 && sigma2 * side2 <= 16.0 * cellSize * cellSize) {
             split_[i] = 1;
             ++count;
         }

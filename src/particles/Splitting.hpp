@@ -55,9 +55,17 @@ public:
                                                      Particles<dim>& p);
 
     /// Split every point whose domain is stretched beyond maxStretch (children appended in
-    /// index order, so the result does not depend on the thread count). Collective: every rank
-    /// calls it. Returns the number of points split on all ranks (the same on every rank).
-    Index apply(Particles<dim>& p, const Comm& comm);
+    /// index order, so the result does not depend on the thread count), except
+    /// - the points marked in `nearBody` (null: none): within a few cells of a coupled body a
+    ///   child, put σ a/4 from its parent, could land inside the body's barrier, and there the
+    ///   coupling, not the sampling, governs;
+    /// - a point whose children would land more than a cell (`cellSize` h) away, σ a/4 > h: a
+    ///   needle stretched far beyond maxStretch without a split (next to a body, or in one
+    ///   step), whose halves would carry its mass further than a shape function reaches.
+    /// Collective: every rank calls it. Returns the number of points split on all ranks (the
+    /// same on every rank).
+    Index apply(Particles<dim>& p, const Comm& comm, double cellSize,
+                const int* nearBody = nullptr);
 
     /// k of every point (0 for all before any split).
     const std::vector<int>& levels(const Particles<dim>& p) const { return p.flag(level_); }

@@ -66,6 +66,7 @@ MpmSimulation<dim>::MpmSimulation(const Case& cs, const RunOptions& options,
                 [this](NodeArray<double>& q) { bc_.foldField(q, grid_.activeBlocks()); });
     }
     splitting_ = ParticleSplitting<dim>::create(schemes, phaseDensity_ != nullptr, particles_);
+    if (splitting_ && coupling_) coupling_->keepNearBodyFlag(particles_);
     // The transfer needs the particle size (GIMP); it is built in start(), so check the
     // schemes' keys now by building one with a provisional width.
     transfer_ = Transfer<dim>::create(schemes, 0.25);
@@ -142,7 +143,9 @@ template <int dim> void MpmSimulation<dim>::sortAndComputeWeights() {
             removed_ += left;
         }
     if (splitting_)
-        if (const Index split = splitting_->apply(particles_, comm_); split > 0) {
+        if (const Index split =
+                splitting_->apply(particles_, comm_, grid_.h(), nearBodyFlag(particles_));
+            split > 0) {
             split_ += split; // the same on every rank
             pointsSplit();
         }

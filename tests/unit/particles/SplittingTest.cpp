@@ -73,7 +73,7 @@ TEST(Splitting, StretchedPointBecomesTwoHalvesAlongTheStretch) {
     Particles<2> p = onePoint<2>(F);
     ParticleSplitting<2> split(2.0, p);
     const Comm comm;
-    ASSERT_EQ(split.apply(p, comm), 1);
+    ASSERT_EQ(split.apply(p, comm, 1.0), 1);
     ASSERT_EQ(p.size(), 2u);
     // Halves at x0 ± σ a / 4 along the stretch (σ = 3, a = 0.01).
     EXPECT_NEAR(std::fabs(p.x[0].x() - 0.5), 0.0075, 1e-15);
@@ -94,8 +94,29 @@ TEST(Splitting, StretchedPointBecomesTwoHalvesAlongTheStretch) {
     EXPECT_EQ(p.id[0], 7); // the parent keeps its id, the child takes the next free one
     EXPECT_EQ(p.id[1], 8);
     // Each half's domain is stretched 1.5: not split again.
-    EXPECT_EQ(split.apply(p, comm), 0);
+    EXPECT_EQ(split.apply(p, comm, 1.0), 0);
     EXPECT_EQ(p.size(), 2u);
+}
+
+/// Left whole: a point marked near a body, and a needle whose halves would land more than a
+/// cell away (σ a / 4 > h).
+TEST(Splitting, PointsNearBodiesAndNeedlesStayWhole) {
+    Mat<2> F;
+    F << 8.5, 0.0, 0.0, 1.0 / 8.5; // σ a / 4 = 0.02125 m with a = 0.01 m
+    const Comm comm;
+    Particles<2> p = onePoint<2>(F);
+    ParticleSplitting<2> split(4.0, p);
+    EXPECT_EQ(split.apply(p, comm, 0.02), 0);
+    EXPECT_EQ(p.size(), 1u);
+    EXPECT_EQ(split.apply(p, comm, 0.022), 1);
+    EXPECT_EQ(p.size(), 2u);
+
+    Particles<2> q = onePoint<2>(F);
+    ParticleSplitting<2> split2(4.0, q);
+    const int near[] = {1};
+    EXPECT_EQ(split2.apply(q, comm, 1.0, near), 0);
+    const int far[] = {0};
+    EXPECT_EQ(split2.apply(q, comm, 1.0, far), 1);
 }
 
 TEST(Splitting, RotationAndSmallStretchSplitNothing) {
@@ -103,10 +124,10 @@ TEST(Splitting, RotationAndSmallStretchSplitNothing) {
     Particles<3> p = onePoint<3>(R);
     ParticleSplitting<3> split(1.5, p);
     const Comm comm;
-    EXPECT_EQ(split.apply(p, comm), 0);
+    EXPECT_EQ(split.apply(p, comm, 1.0), 0);
     Particles<3> q = onePoint<3>(R * Vec<3>(1.4, 1.0, 1.0 / 1.4).asDiagonal());
     ParticleSplitting<3> split2(1.5, q);
-    EXPECT_EQ(split2.apply(q, comm), 0);
+    EXPECT_EQ(split2.apply(q, comm, 1.0), 0);
     EXPECT_EQ(q.size(), 1u);
 }
 
@@ -117,7 +138,7 @@ TEST(Splitting, RotatedStretchSplitsAlongTheCurrentStretchDirection) {
     Particles<3> p = onePoint<3>(F, 0);
     ParticleSplitting<3> split(2.0, p);
     const Comm comm;
-    ASSERT_EQ(split.apply(p, comm), 1);
+    ASSERT_EQ(split.apply(p, comm, 1.0), 1);
     const Vec<3> d = p.x[1] - p.x[0];
     // 2 × σ a / 4 = 0.0125 along R e_y; the centre of mass stays.
     EXPECT_NEAR(d.norm(), 0.0125, 1e-15);
@@ -130,10 +151,10 @@ TEST(Splitting, RotatedStretchSplitsAlongTheCurrentStretchDirection) {
     // whose positions stay on the line through the seed along R e_y.
     Particles<3> q = onePoint<3>(R * Vec<3>(1.0, 8.5, 1.0 / 8.5).asDiagonal(), 0);
     ParticleSplitting<3> split2(2.0, q);
-    EXPECT_EQ(split2.apply(q, comm), 1);
-    EXPECT_EQ(split2.apply(q, comm), 2);
-    EXPECT_EQ(split2.apply(q, comm), 4); // 8.5 / 4 = 2.1 > 2
-    EXPECT_EQ(split2.apply(q, comm), 0);
+    EXPECT_EQ(split2.apply(q, comm, 1.0), 1);
+    EXPECT_EQ(split2.apply(q, comm, 1.0), 2);
+    EXPECT_EQ(split2.apply(q, comm, 1.0), 4); // 8.5 / 4 = 2.1 > 2
+    EXPECT_EQ(split2.apply(q, comm, 1.0), 0);
     ASSERT_EQ(q.size(), 8u);
     double mass = 0.0;
     Vec<3> centre = Vec<3>::Zero();
