@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "parallel/Decomposition.hpp"
 
+#include "case/Registry.hpp"
+#include "case/Selection.hpp"
 #include "io/ParticleFile.hpp"
 
 #include <algorithm>
@@ -209,6 +211,77 @@ Index integerIn(const Dictionary& d, const std::string& key, double v, Index lo,
     return static_cast<Index>(v);
 }
 
+/// Slabs of equal block counts along each axis (simpleCoeffs.n).
+template <int dim> class SimpleDecomposition : public DecompositionMethod<dim> {
+public:
+    explicit SimpleDecomposition(const Dictionary& /*dict*/) {}
+    void assign(const Dictionary& dict, const std::vector<Index>& /*load*/, const IVec<dim>& nb,
+                int size, std::vector<std::int32_t>& owner) const override {
+        const Dictionary coeffs = dict.subDict("simpleCoeffs");
+        const IVec<dim> n = readCounts(coeffs, size, nb);
+        coeffs.checkUnknownKeys();
+        forEachBlock(Box<dim>{IVec<dim>::Zero(), nb}, nb, [&](Index b, const IVec<dim>& c) {
+            IVec<dim> s;
+            for (int d = 0; d < dim; ++d)
+                s[d] = static_cast<int>(static_cast<Index>(c[d]) * n[d] / nb[d]);
+            owner[static_cast<std::size_t>(b)] = slabRank(s, n);
+        });
+    }
+    bool balancesPoints() const override { return false; }
+};
+
+/// Slabs of equal load along the axes in `order` (hierarchicalCoeffs.n, order).
+template <int dim> class HierarchicalDecomposition : public DecompositionMethod<dim> {
+public:
+    explicit HierarchicalDecomposition(const Dictionary& /*dict*/) {}
+    void assign(const Dictionary& dict, const std::vector<Index>& load, const IVec<dim>& nb,
+                int size, std::vector<std::int32_t>& owner) const override {
+        const Dictionary coeffs = dict.subDict("hierarchicalCoeffs");
+        const IVec<dim> n = readCounts(coeffs, size, nb);
+        const IVec<dim> order = readOrder<dim>(coeffs);
+        coeffs.checkUnknownKeys();
+        splitHierarchical(load, nb, n, order, 0, Box<dim>{IVec<dim>::Zero(), nb},
+                          IVec<dim>::Zero().eval(), owner);
+    }
+    bool balancesPoints() const override { return true; }
+};
+
+/// Recursive coordinate bisection of the load, any number of subdomains.
+template <int dim> class BisectionDecomposition : public DecompositionMethod<dim> {
+public:
+    explicit BisectionDecomposition(const Dictionary& /*dict*/) {}
+    void assign(const Dictionary& dict, const std::vector<Index>& load, const IVec<dim>& nb,
+                int size, std::vector<std::int32_t>& owner) const override {
+        if (dict.isDict("bisectionCoeffs")) dict.subDict("bisectionCoeffs").checkUnknownKeys();
+        bisect(load, nb, Box<dim>{IVec<dim>::Zero(), nb}, 0, size, owner);
+    }
+    bool balancesPoints() const override { return true; }
+};
+
+MPM_FAMILY_INFO("decompositionMethods",
+                {"method in system/decomposeParDict",
+                 "12. system/decomposeParDict",
+                 {{"method", "word", "-", "required", "how the blocks are shared out"}}});
+MPM_FAMILY(DecompositionMethodRegistry<2>, 2, "decompositionMethods");
+MPM_FAMILY(DecompositionMethodRegistry<3>, 3, "decompositionMethods");
+MPM_REGISTER_DIMS(DecompositionMethodRegistry, SimpleDecomposition, "simple");
+MPM_REGISTER_DIMS(DecompositionMethodRegistry, HierarchicalDecomposition, "hierarchical");
+MPM_REGISTER_DIMS(DecompositionMethodRegistry, BisectionDecomposition, "bisection");
+MPM_SCHEMA("decompositionMethods", "simple",
+           {"slabs of equal block counts along each axis (ignores the points)",
+            {{"simpleCoeffs", "map {n}", "-", "required",
+              "n: subdomains per axis, their product numberOfSubdomains"}},
+            "{method: simple, simpleCoeffs: {n: [2, 1]}}"});
+MPM_SCHEMA("decompositionMethods", "hierarchical",
+           {"slabs of equal load, axis by axis",
+            {{"hierarchicalCoeffs", "map {n, order}", "-", "required",
+              "n: subdomains per axis; order: the axes in splitting order (default xyz)"}},
+            "{method: hierarchical, hierarchicalCoeffs: {n: [2, 1], order: xyz}}"});
+MPM_SCHEMA("decompositionMethods", "bisection",
+           {"recursive coordinate bisection of the load, any number of subdomains",
+            {{"bisectionCoeffs", "map", "-", "none", "takes no key"}},
+            "{method: bisection}"});
+
 } // namespace
 
 template <int dim>
@@ -225,31 +298,13 @@ Decomposition<dim> Decomposition<dim>::build(const Dictionary& dict, const IVec<
     if (static_cast<Index>(load.size()) != countBlocks(blocks))
         throw std::invalid_argument("Decomposition::build: one load per block expected");
     const int size = dict.getInt("numberOfSubdomains", Bounds{1, 1e6});
-    const std::string method = dict.getWord("method", {"simple", "hierarchical", "bisection"});
+    const std::string method =
+        dict.getWord("method", registeredWords<DecompositionMethodRegistry<dim>>());
     for (const char* unused : {"simpleCoeffs", "hierarchicalCoeffs", "bisectionCoeffs"})
         dict.has(unused); // the other methods' coefficients may stay, as in OpenFOAM
     Decomposition dec(blocks, size, method);
-    const Box<dim> all{IVec<dim>::Zero(), blocks};
-    if (method == "simple") {
-        const Dictionary coeffs = dict.subDict("simpleCoeffs");
-        const IVec<dim> n = readCounts(coeffs, size, blocks);
-        coeffs.checkUnknownKeys();
-        forEachBlock(all, blocks, [&](Index b, const IVec<dim>& c) {
-            IVec<dim> s;
-            for (int d = 0; d < dim; ++d)
-                s[d] = static_cast<int>(static_cast<Index>(c[d]) * n[d] / blocks[d]);
-            dec.owner_[static_cast<std::size_t>(b)] = slabRank(s, n);
-        });
-    } else if (method == "hierarchical") {
-        const Dictionary coeffs = dict.subDict("hierarchicalCoeffs");
-        const IVec<dim> n = readCounts(coeffs, size, blocks);
-        const IVec<dim> order = readOrder<dim>(coeffs);
-        coeffs.checkUnknownKeys();
-        splitHierarchical(load, blocks, n, order, 0, all, IVec<dim>::Zero().eval(), dec.owner_);
-    } else {
-        if (dict.isDict("bisectionCoeffs")) dict.subDict("bisectionCoeffs").checkUnknownKeys();
-        bisect(load, blocks, all, 0, size, dec.owner_);
-    }
+    selectByWord<DecompositionMethodRegistry<dim>>(dict, "method", "")
+        ->assign(dict, load, blocks, size, dec.owner_);
     return dec;
 }
 
@@ -258,7 +313,9 @@ Decomposition<dim> Decomposition<dim>::read(const Case& cs, const std::string& r
                                             const IVec<dim>& blocks) {
     const Dictionary d = cs.read(relativeFile);
     const int size = d.getInt("numberOfSubdomains", Bounds{1, 1e6});
-    const std::string method = d.getWord("method", {"none", "simple", "hierarchical", "bisection"});
+    std::vector<std::string> methods = registeredWords<DecompositionMethodRegistry<dim>>();
+    methods.push_back("none");
+    const std::string method = d.getWord("method", methods);
     const std::vector<double> nb = d.getVector("blocks", dim);
     for (int k = 0; k < dim; ++k) {
         if (nb[k] != blocks[k]) {
@@ -345,7 +402,7 @@ RebalanceSettings RebalanceSettings::read(const Dictionary& dict) {
     r.maxImbalance = d.getScalar("maxImbalance", Bounds{1.0, 1e300, false, true});
     r.interval = d.getIntOr("interval", 50, Bounds::closed(1, 1e9));
     d.checkUnknownKeys();
-    if (dict.getWordOr("method", "simple", {"simple", "hierarchical", "bisection"}) == "simple")
+    if (!selectByWord<DecompositionMethodRegistry<2>>(dict, "method", "simple")->balancesPoints())
         dict.error("rebalance", "rebalancing needs a method that balances the points "
                                 "(hierarchical or bisection); simple cuts the box geometrically");
     return r;

@@ -45,6 +45,22 @@ struct RebalanceSettings {
     static RebalanceSettings read(const Dictionary& dict);
 };
 
+/// A method of system/decomposeParDict (`method`; DecompositionMethodRegistry, family
+/// `decompositionMethods`): simple, hierarchical or bisection, as above.
+template <int dim> class DecompositionMethod {
+public:
+    virtual ~DecompositionMethod() = default;
+    /// owner[b] ∈ [0, size) for every block b of the nb box, `load[b]` its points; reads (and
+    /// checks) the method's coefficients in `dict`.
+    virtual void assign(const Dictionary& dict, const std::vector<Index>& load, const IVec<dim>& nb,
+                        int size, std::vector<std::int32_t>& owner) const = 0;
+    /// True when the subdomains follow the points (a rebalance needs such a method).
+    virtual bool balancesPoints() const = 0;
+};
+
+template <class Base, class... Args> class Registry; // case/Registry.hpp
+template <int dim> using DecompositionMethodRegistry = Registry<DecompositionMethod<dim>>;
+
 template <int dim> class Decomposition {
 public:
     /// One subdomain (a serial run): every block owned by 0, method "none".

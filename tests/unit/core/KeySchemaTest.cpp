@@ -114,7 +114,8 @@ TEST(KeySchema, EveryFamilyOfTheSolverIsInTheCatalogue) {
                                          "initialVelocity",
                                          "initialStress",
                                          "seedingMethods",
-                                         "bodyMotions"};
+                                         "bodyMotions",
+                                         "decompositionMethods"};
     EXPECT_EQ(names, expected);
 }
 

@@ -99,7 +99,7 @@ TEST(Decomposition, InputErrorsNameTheKey) {
         EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
     };
     expect("numberOfSubdomains: 0\nmethod: bisection\n", "numberOfSubdomains", "[1,");
-    expect("numberOfSubdomains: 2\nmethod: scotch\n", "method", "simple, hierarchical, bisection");
+    expect("numberOfSubdomains: 2\nmethod: scotch\n", "method", "bisection, hierarchical, simple");
     expect("numberOfSubdomains: 3\nmethod: simple\nsimpleCoeffs: {n: [2, 1, 1]}\n",
            "simpleCoeffs.n", "must multiply to numberOfSubdomains (3)");
     expect("numberOfSubdomains: 2\nmethod: simple\nsimpleCoeffs: {n: [2, 1]}\n", "simpleCoeffs.n",
