@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <sstream>
 
 namespace mpm {
@@ -63,33 +64,29 @@ protected:
         const auto& p = s.particles;
         fields_.clear();
         width_ = 0;
+        const std::vector<Field> known = pointFields();
         for (const auto& n : names_) {
-            Field f{n, Kind::modelScalar, 0, {}};
-            if (n == "pressure")
-                f.kind = Kind::pressure;
-            else if (n == "density")
-                f.kind = Kind::density;
-            else if (n == "plasticStrain")
-                f.kind = Kind::plasticStrain;
-            else if (n == "velocity") {
-                f.kind = Kind::velocity;
-                for (int d = 0; d < dim; ++d)
-                    f.components.push_back(std::string("v") + "xyz"[d]);
-            } else if (n == "stress") {
-                f.kind = Kind::stress;
-                for (int c = 0; c < numStress; ++c)
-                    f.components.push_back(stressNames[c]);
+            const auto builtIn = std::find_if(known.begin(), known.end(),
+                                              [&n](const Field& k) { return k.name == n; });
+            Field f;
+            if (builtIn != known.end()) {
+                f = *builtIn;
             } else {
                 const auto it = std::find_if(p.scalars.begin(), p.scalars.end(),
                                              [&n](const auto& sf) { return sf.info.name == n; });
                 if (it == p.scalars.end()) {
-                    std::string valid = "pressure, density, velocity, stress, plasticStrain";
+                    std::string valid;
+                    for (const Field& k : known)
+                        valid += (valid.empty() ? "" : ", ") + k.name;
                     for (const auto& sf : p.scalars)
                         valid += ", " + sf.info.name;
                     this->dict().error("fields",
                                        "unknown field '" + n + "' (valid: " + valid + ")");
                 }
-                f.handle = static_cast<std::size_t>(it - p.scalars.begin());
+                const std::size_t handle = static_cast<std::size_t>(it - p.scalars.begin());
+                f = {n, {}, [handle](const Particles<dim>& q, Index i, double wm, double* acc) {
+                         acc[0] += wm * q.scalar(handle)[i];
+                     }};
             }
             width_ += std::max<int>(1, static_cast<int>(f.components.size()));
             fields_.push_back(std::move(f));
@@ -170,12 +167,12 @@ protected:
     }
 
 private:
-    enum class Kind { pressure, density, velocity, stress, plasticStrain, modelScalar };
+    /// A sampled field: its name, column prefixes (empty: a scalar) and what a point adds,
+    /// acc[j] += wm f_j for each of its components j.
     struct Field {
         std::string name;
-        Kind kind;
-        std::size_t handle;                  ///< index into Particles::scalars (modelScalar)
-        std::vector<std::string> components; ///< column prefixes (empty: a scalar)
+        std::vector<std::string> components;
+        std::function<void(const Particles<dim>&, Index, double, double*)> add;
     };
     /// Independent stress components: xx yy zz xy, and yz xz in 3D (σ_zz is carried in 2D).
     static constexpr int numStress = dim == 3 ? 6 : 4;
@@ -183,31 +180,42 @@ private:
     static constexpr std::array<std::array<int, 2>, 6> stressIndex{
         {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}}};
 
+    /// The fields every point has (a model scalar state is sampled by its own name).
+    static std::vector<Field> pointFields() {
+        std::vector<std::string> v, sigma;
+        for (int d = 0; d < dim; ++d)
+            v.push_back(std::string("v") + "xyz"[d]);
+        for (int c = 0; c < numStress; ++c)
+            sigma.push_back(stressNames[c]);
+        using P = const Particles<dim>&;
+        return {
+            {"pressure",
+             {},
+             [](P p, Index i, double wm, double* a) { a[0] += wm * (-p.stress[i].trace() / 3.0); }},
+            {"density",
+             {},
+             [](P p, Index i, double wm, double* a) { a[0] += wm * (p.mass[i] / p.volume[i]); }},
+            {"velocity", v,
+             [](P p, Index i, double wm, double* a) {
+                 for (int d = 0; d < dim; ++d)
+                     a[d] += wm * p.v[i][d];
+             }},
+            {"stress", sigma,
+             [](P p, Index i, double wm, double* a) {
+                 for (int c = 0; c < numStress; ++c)
+                     a[c] += wm * p.stress[i](stressIndex[c][0], stressIndex[c][1]);
+             }},
+            {"plasticStrain",
+             {},
+             [](P p, Index i, double wm, double* a) { a[0] += wm * p.plasticStrain[i]; }},
+        };
+    }
+
     /// a[j] += wm f_j for every component j of every field at point i, in column order.
     void accumulate(const Particles<dim>& p, Index i, double wm, double* a) const {
         for (const auto& f : fields_) {
-            switch (f.kind) {
-            case Kind::pressure:
-                *a++ += wm * (-p.stress[i].trace() / 3.0);
-                break;
-            case Kind::density:
-                *a++ += wm * (p.mass[i] / p.volume[i]);
-                break;
-            case Kind::velocity:
-                for (int d = 0; d < dim; ++d)
-                    *a++ += wm * p.v[i][d];
-                break;
-            case Kind::stress:
-                for (int c = 0; c < numStress; ++c)
-                    *a++ += wm * p.stress[i](stressIndex[c][0], stressIndex[c][1]);
-                break;
-            case Kind::plasticStrain:
-                *a++ += wm * p.plasticStrain[i];
-                break;
-            case Kind::modelScalar:
-                *a++ += wm * p.scalar(f.handle)[i];
-                break;
-            }
+            f.add(p, i, wm, a);
+            a += std::max<std::size_t>(1, f.components.size());
         }
     }
 
