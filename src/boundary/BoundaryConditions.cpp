@@ -307,7 +307,7 @@ void BoundaryConditions<dim>::constrain(const Grid<dim>& g, NodeArray<Vec<dim>>&
             const Patch& p = face.patches[k];
             const BoundaryCondition<dim>& condition = governing(face, k, t);
             if (!condition.unilateral()) {
-                condition.constrain({&p.live, p.liveOwners}, normal, g.mass, v, t);
+                condition.apply(p.live, normal, g.mass, v, t);
                 continue;
             }
             const unsigned bit = 1u << normal.axis;
@@ -349,13 +349,41 @@ void BoundaryConditions<dim>::setWallContact(const std::vector<std::pair<Index, 
 }
 
 template <int dim>
+Vec<dim> BoundaryConditions<dim>::constrainAndReact(const BoundaryCondition<dim>& condition,
+                                                    const Patch& p, const FaceNormal& n,
+                                                    Grid<dim>& g, const Vec<dim>& gravity, double t,
+                                                    double dt) {
+    if (condition.open()) return Vec<dim>::Zero(); // no condition: the node stays untouched
+    // v⁻ of each owner node: the undamped update for the first condition acting on the node
+    // this step, the velocity the previous one left otherwise (edges and corners).
+    before_.resize(static_cast<std::size_t>(p.liveOwners));
+    for (Index k = 0; k < p.liveOwners; ++k) {
+        const Index i = p.live[static_cast<std::size_t>(k)];
+        const double m = g.mass[i];
+        if (m == 0) continue;
+        before_[static_cast<std::size_t>(k)] = g.v[i];
+        if (!touched_[i]) {
+            before_[static_cast<std::size_t>(k)] = g.vOld[i] + dt * (g.force[i] / m + gravity);
+            touched_[i] = 1;
+        }
+    }
+    condition.apply(p.live, n, g.mass, g.v, t);
+    Vec<dim> reaction = Vec<dim>::Zero();
+    for (Index k = 0; k < p.liveOwners; ++k) {
+        const Index i = p.live[static_cast<std::size_t>(k)];
+        const double m = g.mass[i];
+        if (m != 0) reaction += m * (before_[static_cast<std::size_t>(k)] - g.v[i]) / dt;
+    }
+    return reaction;
+}
+
+template <int dim>
 void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& gravity, double t,
                                               double dt, Reactions& reactions) {
     for (const Face& face : faces_)
         for (const Patch& p : face.patches)
             for (Index i : p.live)
                 touched_[i] = 0;
-    const NodeState<dim> state{g.mass, g.vOld, g.force};
     for (int f = 0; f < NumFaces; ++f) {
         Face& face = faces_[f];
         Vec<dim> reaction = Vec<dim>::Zero();
@@ -374,8 +402,7 @@ void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& grav
                     contact_[i] = static_cast<unsigned char>(pressed ? contact_[i] | bit
                                                                      : contact_[i] & ~bit);
                 }
-                p.reaction = condition.constrainUpdate({&p.live, p.liveOwners}, normal, state, g.v,
-                                                       gravity, t, dt, touched_);
+                p.reaction = constrainAndReact(condition, p, normal, g, gravity, t, dt);
                 reaction += p.reaction;
             }
         }

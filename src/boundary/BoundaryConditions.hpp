@@ -151,6 +151,15 @@ private:
     void groupByBlock(Patch& p) const;
     /// The condition governing patch k of face f at time t.
     const BoundaryCondition<dim>& governing(const Face& face, std::size_t k, double t) const;
+    /// Apply `condition` to the updated velocities of p's live nodes and return the reaction,
+    /// the force the material exerts on the patch, F = Σ m_i (v_i⁻ − v_i⁺)/Δt over its owner
+    /// nodes [N] (per metre in 2D) [000 §4.2]: v⁻ is the undamped update v⁰ + Δt (f/m + g) for
+    /// the first condition acting on a node this step, otherwise the velocity the previous
+    /// condition left (edges and corners; `touched_`). Periodic images are constrained alike
+    /// but not counted.
+    Vec<dim> constrainAndReact(const BoundaryCondition<dim>& condition, const Patch& p,
+                               const FaceNormal& n, Grid<dim>& g, const Vec<dim>& gravity, double t,
+                               double dt);
 
     const Grid<dim>& grid_;
     std::array<Face, NumFaces> faces_;
@@ -158,7 +167,8 @@ private:
     std::unique_ptr<PeriodicLattice<dim>> lattice_; ///< built once the faces are read
     bool hasOpen_ = false;
     bool hasUnilateral_ = false;
-    NodeArray<char> touched_;
+    NodeArray<char> touched_;          ///< a condition acted on the node this step
+    std::vector<Vec<dim>> before_;     ///< scratch: v⁻ of a patch's owner nodes
     NodeArray<unsigned char> contact_; ///< per node: bit a = pressed against an axis-a wall
 };
 

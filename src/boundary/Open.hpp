@@ -10,13 +10,8 @@ namespace mpm {
 template <int dim> class Open final : public BoundaryCondition<dim> {
 public:
     explicit Open(const Dictionary&) {}
-    void constrain(const PatchNodes&, const FaceNormal&, const NodeArray<double>&,
-                   NodeArray<Vec<dim>>&, double) const override {}
-    Vec<dim> constrainUpdate(const PatchNodes&, const FaceNormal&, const NodeState<dim>&,
-                             NodeArray<Vec<dim>>&, const Vec<dim>&, double, double,
-                             NodeArray<char>&) const override {
-        return Vec<dim>::Zero();
-    }
+    void apply(const std::vector<Index>&, const FaceNormal&, const NodeArray<double>&,
+               NodeArray<Vec<dim>>&, double) const override {}
     bool open() const override { return true; }
 };
 

@@ -11,13 +11,8 @@ namespace mpm {
 template <int dim> class Periodic final : public BoundaryCondition<dim> {
 public:
     explicit Periodic(const Dictionary&) {}
-    void constrain(const PatchNodes&, const FaceNormal&, const NodeArray<double>&,
-                   NodeArray<Vec<dim>>&, double) const override {}
-    Vec<dim> constrainUpdate(const PatchNodes&, const FaceNormal&, const NodeState<dim>&,
-                             NodeArray<Vec<dim>>&, const Vec<dim>&, double, double,
-                             NodeArray<char>&) const override {
-        return Vec<dim>::Zero();
-    }
+    void apply(const std::vector<Index>&, const FaceNormal&, const NodeArray<double>&,
+               NodeArray<Vec<dim>>&, double) const override {}
     bool periodic() const override { return true; }
 };
 

@@ -5,6 +5,7 @@
 #include "boundary/BoundaryConditions.hpp"
 #include "TestSupport.hpp"
 #include "boundary/Velocity.hpp"
+#include "core/KeySchema.hpp"
 
 #include <gtest/gtest.h>
 
@@ -111,6 +112,71 @@ TEST(BoundaryConditions, EveryConditionOnOneNode) {
         s.bc.constrain(g, g.vOld, 0.0);
         EXPECT_NEAR((g.vOld[i] - c.p2g.value_or(c.v)).norm(), 0, 1e-12);
     }
+}
+
+/// Every registered condition (from its schema's example) on yMin of a box periodic along x:
+/// the reaction is the momentum the condition took out of the owner nodes, Σ m (v⁻ − v⁺)/Δt
+/// with v⁻ the undamped update, and a periodic image, given its owner's state, is constrained
+/// as its owner but not counted. A new condition is tested without writing a test.
+TEST(BoundaryConditions, EveryRegisteredConditionBooksTheMomentumItTakesOut) {
+    const auto* family = ModelCatalogue::find("boundaryConditions");
+    ASSERT_NE(family, nullptr);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    const double dt = 0.01;
+    const Vec<2> gravity(0.3, -9.81);
+    int tested = 0;
+    for (const auto& [type, schema] : family->schemas) {
+        if (type == "periodic") continue; // a face kind: the x faces here
+        SCOPED_TRACE(schema.example);
+        Scene<2> s(box2D,
+                   "boundary: {xMin: periodic, xMax: periodic, yMin: " + schema.example + "}\n");
+        Grid<2>& g = s.grid;
+        clearNodes(g);
+        const PeriodicLattice<2>& lattice = s.bc.lattice();
+        // The owner of every node of yMin's layers, and each owner's state (images copy it).
+        std::vector<std::pair<Index, Index>> imageOf; // (image, owner)
+        std::vector<Index> owners;
+        for (Index k : g.faceNodes(2)) {
+            IVec<2> c = g.nodeCoord(k);
+            const IVec<2> oc(lattice.ownerCoord(0, c[0]), c[1]);
+            const Index o = g.nodeIndex(oc);
+            if (o == k)
+                owners.push_back(k);
+            else
+                imageOf.emplace_back(k, o);
+        }
+        ASSERT_FALSE(owners.empty());
+        ASSERT_FALSE(imageOf.empty()) << "no periodic image on yMin";
+        for (Index k : owners) {
+            g.mass[k] = 1.0 + 0.5 * (u(rng) + 2.0);
+            g.vOld[k] = Vec<2>(u(rng), u(rng));
+            g.force[k] = Vec<2>(u(rng), u(rng));
+            g.v[k] = g.vOld[k] + dt * (g.force[k] / g.mass[k] + gravity) + Vec<2>(0.01, -0.02);
+        }
+        for (const auto& [k, o] : imageOf) {
+            g.mass[k] = g.mass[o];
+            g.vOld[k] = g.vOld[o];
+            g.force[k] = g.force[o];
+            g.v[k] = g.v[o];
+        }
+        BoundaryConditions<2>::Reactions r;
+        s.bc.constrainUpdate(g, gravity, 0.5, dt, r);
+        // v⁻ is the undamped update, not the damped velocity handed over (+(0.01, −0.02)).
+        Vec<2> expected = Vec<2>::Zero();
+        for (Index k : owners)
+            expected +=
+                g.mass[k] * (g.vOld[k] + dt * (g.force[k] / g.mass[k] + gravity) - g.v[k]) / dt;
+        if (type == "open") expected.setZero(); // no condition, no reaction
+        EXPECT_LT((r[2] - expected).norm(), 1e-9 * (1.0 + expected.norm()))
+            << type << ": " << r[2].transpose() << " against " << expected.transpose();
+        for (const auto& [k, o] : imageOf)
+            EXPECT_EQ(g.v[k], g.v[o]) << type << ": image " << k << " of " << o;
+        for (int f : {0, 1, 3})
+            EXPECT_EQ(r[f], Vec<2>::Zero()) << type << " " << Grid<2>::faceName(f);
+        ++tested;
+    }
+    EXPECT_GE(tested, 6);
 }
 
 TEST(BoundaryConditions, UnilateralP2GVelocityFollowsTheContactOfTheLastUpdate) {
