@@ -24,12 +24,6 @@ std::unique_ptr<BodyAcceleration<dim>> BodyAcceleration<dim>::constant(const Vec
     return std::make_unique<ConstantAcceleration<dim>>(g);
 }
 
-template <int dim>
-Vec<dim> BodyAcceleration<dim>::readVec(const Dictionary& dict, const std::string& key) {
-    const std::vector<double> v = dict.getVector(key, dim);
-    return Eigen::Map<const Vec<dim>>(v.data());
-}
-
 template class BodyAcceleration<2>;
 template class BodyAcceleration<3>;
 

@@ -40,10 +40,6 @@ public:
     static std::unique_ptr<BodyAcceleration> create(const Dictionary& dict);
     /// A constant field g (no constant/g: zero).
     static std::unique_ptr<BodyAcceleration> constant(const Vec<dim>& g);
-
-protected:
-    /// A vector entry of exactly dim components.
-    static Vec<dim> readVec(const Dictionary& dict, const std::string& key);
 };
 
 template <int dim> using BodyAccelerationRegistry = Registry<BodyAcceleration<dim>>;

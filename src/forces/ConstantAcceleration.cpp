@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "forces/ConstantAcceleration.hpp"
+#include "case/DictionaryVectors.hpp"
 
 namespace mpm {
 
 template <int dim>
 ConstantAcceleration<dim>::ConstantAcceleration(const Dictionary& dict)
-    : g_(BodyAcceleration<dim>::readVec(dict, "value")) {}
+    : g_(readVec<dim>(dict, "value")) {}
 
 template class ConstantAcceleration<2>;
 template class ConstantAcceleration<3>;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "forces/RampAcceleration.hpp"
 
+#include "case/DictionaryVectors.hpp"
 #include "core/Constants.hpp"
 
 #include <algorithm>
@@ -8,13 +9,10 @@
 
 namespace mpm {
 
-namespace {}
-
 template <int dim>
 RampAcceleration<dim>::RampAcceleration(const Dictionary& dict)
-    : initial_(dict.has("initial") ? BodyAcceleration<dim>::readVec(dict, "initial")
-                                   : Vec<dim>::Zero()),
-      value_(BodyAcceleration<dim>::readVec(dict, "value")), start_(dict.getScalarOr("start", 0.0)),
+    : initial_(dict.has("initial") ? readVec<dim>(dict, "initial") : Vec<dim>::Zero()),
+      value_(readVec<dim>(dict, "value")), start_(dict.getScalarOr("start", 0.0)),
       duration_(dict.getScalar("duration", Bounds::positive())),
       cosine_(dict.getWordOr("profile", "cosine", {"cosine", "smoothstep"}) == "cosine") {
     magnitudeA_ = initial_.norm();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "forces/SinusoidalAcceleration.hpp"
 
+#include "case/DictionaryVectors.hpp"
 #include "core/Constants.hpp"
 
 #include <algorithm>
@@ -13,8 +14,7 @@ namespace {}
 
 template <int dim>
 SinusoidalAcceleration<dim>::SinusoidalAcceleration(const Dictionary& dict)
-    : g0_(BodyAcceleration<dim>::readVec(dict, "value")),
-      direction_(BodyAcceleration<dim>::readVec(dict, "direction")),
+    : g0_(readVec<dim>(dict, "value")), direction_(readVec<dim>(dict, "direction")),
       amplitude_(dict.getScalar("amplitude", Bounds::nonNegative())),
       phase_(dict.getScalarOr("phase", 0.0) * pi / 180.0) {
     const bool byFrequency = dict.has("frequency");

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/InitialVelocity.hpp"
 
+#include "case/DictionaryVectors.hpp"
 #include "case/Registry.hpp"
 #include "core/Constants.hpp"
 
@@ -11,18 +12,11 @@ namespace mpm {
 
 namespace {
 
-template <int dim> Vec<dim> toVec(const std::vector<double>& v) {
-    Vec<dim> r;
-    for (int d = 0; d < dim; ++d)
-        r[d] = v[d];
-    return r;
-}
-
 /// v = value everywhere.
 template <int dim> class UniformVelocity : public InitialVelocity<dim> {
 public:
     explicit UniformVelocity(const Vec<dim>& value) : value_(value) {}
-    explicit UniformVelocity(const Dictionary& d) : value_(toVec<dim>(d.getVector("value", dim))) {}
+    explicit UniformVelocity(const Dictionary& d) : value_(readVec<dim>(d, "value")) {}
     Vec<dim> at(const Vec<dim>& /*x*/) const override { return value_; }
 
 private:
@@ -33,9 +27,8 @@ private:
 template <int dim> class AxialModeVelocity : public InitialVelocity<dim> {
 public:
     explicit AxialModeVelocity(const Dictionary& d)
-        : amplitude_(d.getScalar("amplitude")),
-          direction_(toVec<dim>(d.getVector("direction", dim))),
-          origin_(toVec<dim>(d.getVectorOr("origin", std::vector<double>(dim, 0.0), dim))),
+        : amplitude_(d.getScalar("amplitude")), direction_(readVec<dim>(d, "direction")),
+          origin_(readVecOr<dim>(d, "origin", Vec<dim>::Zero())),
           length_(d.getScalar("length", Bounds::positive())),
           n_(d.getIntOr("mode", 1, Bounds::closed(1, 1000))) {
         if (direction_.norm() == 0) d.error("direction", "direction must not be zero");
@@ -60,7 +53,7 @@ private:
 template <int dim> class RadialModeVelocity : public InitialVelocity<dim> {
 public:
     explicit RadialModeVelocity(const Dictionary& d)
-        : amplitude_(d.getScalar("amplitude")), centre_(toVec<dim>(d.getVector("centre", dim))),
+        : amplitude_(d.getScalar("amplitude")), centre_(readVec<dim>(d, "centre")),
           radius_(d.getScalar("radius", Bounds::positive())) {}
     Vec<dim> at(const Vec<dim>& x) const override {
         const Vec<dim> r = x - centre_;
@@ -113,7 +106,7 @@ std::unique_ptr<InitialVelocity<dim>> InitialVelocity<dim>::create(const Diction
     if (set.isDict("velocity"))
         return InitialVelocityRegistry<dim>::create(set.subDict("velocity"));
     return std::make_unique<UniformVelocity<dim>>(
-        toVec<dim>(set.getVectorOr("velocity", std::vector<double>(dim, 0.0), dim)));
+        readVecOr<dim>(set, "velocity", Vec<dim>::Zero()));
 }
 
 template class InitialVelocity<2>;

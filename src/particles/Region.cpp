@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "particles/Region.hpp"
 
+#include "case/DictionaryVectors.hpp"
 #include "case/Registry.hpp"
 #include "core/Constants.hpp"
 
@@ -19,12 +20,6 @@ template class Region<2>;
 template class Region<3>;
 
 namespace {
-
-/// The dim numbers of `key` as a vector.
-template <int dim> Vec<dim> readVec(const Dictionary& dict, const std::string& key) {
-    const std::vector<double> v = dict.getVector(key, dim);
-    return Eigen::Map<const Vec<dim>>(v.data());
-}
 
 /// Axis-aligned box [min, max]: volume = prod_d (max_d - min_d).
 template <int dim> class BoxRegion : public Region<dim> {

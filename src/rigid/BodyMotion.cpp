@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/BodyMotion.hpp"
 
+#include "case/DictionaryVectors.hpp"
 #include "case/Registry.hpp"
 #include "case/Selection.hpp"
 #include "core/Format.hpp"
@@ -13,11 +14,6 @@ namespace mpm {
 
 namespace {
 
-template <int dim> Vec<dim> readVec(const Dictionary& dict, const std::string& key) {
-    const std::vector<double> v = dict.getVector(key, dim);
-    return Eigen::Map<const Vec<dim>>(v.data());
-}
-
 /// Number of angular-velocity components: 3 in 3D, 1 (about z) in 2D.
 template <int dim> constexpr int nOmega() {
     return dim == 3 ? 3 : 1;
@@ -25,7 +21,7 @@ template <int dim> constexpr int nOmega() {
 
 /// The top-level `velocity` of a body entry, zero when absent.
 template <int dim> Vec<dim> bodyVelocity(const Dictionary& body) {
-    return body.has("velocity") ? readVec<dim>(body, "velocity") : Vec<dim>::Zero();
+    return readVecOr<dim>(body, "velocity", Vec<dim>::Zero());
 }
 
 /// Refuse the body entry's `velocity` and `angularVelocity` (`why`: what to do instead).

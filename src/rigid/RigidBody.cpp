@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rigid/RigidBody.hpp"
 
+#include "case/DictionaryVectors.hpp"
 #include "core/Constants.hpp"
 #include "core/Format.hpp"
 
@@ -18,11 +19,6 @@ template <class V> std::string fmtList(const V& v) {
     for (Eigen::Index i = 0; i < v.size(); ++i)
         s += (i > 0 ? ", " : "") + fullPrecision(v[i]);
     return s + "]";
-}
-
-template <int dim> Vec<dim> readVec(const Dictionary& dict, const std::string& key) {
-    const std::vector<double> v = dict.getVector(key, dim);
-    return Eigen::Map<const Vec<dim>>(v.data());
 }
 
 Vec3 readVec3(const Dictionary& dict, const std::string& key) {
