@@ -71,12 +71,12 @@ Index ParticleSplitting<dim>::apply(Particles<dim>& p, const Comm& comm, double 
     Index count = 0;
 #pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : count)
     for (Index i = 0; i < n; ++i) {
-        const Mat<dim> d = domainOf(p, s, i);
-        // σ² ≤ |D|², so most points are passed over without an eigen-solve.
-        if (d.squaredNorm() <= limit2 || level[i] >= MaxLevel ||
-            (nearBody != nullptr && nearBody[i] != 0))
+        // σ² ≤ |D|², so most points are passed over without an eigen-solve; a point never
+        // split has S = 1, D = F, and is passed over without reading S.
+        const double norm2 = level[i] == 0 ? p.F[i].squaredNorm() : domainOf(p, s, i).squaredNorm();
+        if (norm2 <= limit2 || level[i] >= MaxLevel || (nearBody != nullptr && nearBody[i] != 0))
             continue;
-        const double sigma2 = largestStretch<dim>(d).first;
+        const double sigma2 = largestStretch<dim>(domainOf(p, s, i)).first;
         // The children land σ a/4 away: at most a cell (σ² a² ≤ 16 h²).
         const double side2 = std::pow(std::ldexp(p.volume0[i], level[i]), 2.0 / dim);
         if (sigma2 > limit2 && sigma2 * side2 <= 16.0 * cellSize * cellSize) {
