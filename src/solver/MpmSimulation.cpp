@@ -239,10 +239,7 @@ void MpmSimulation<dim>::applyVelocityConstraints(NodeArray<Vec<dim>>& v, double
 
 template <int dim> void MpmSimulation<dim>::gridVelocityFromMomentum() {
     auto timer = timer_(PhaseTimer::Grid);
-    grid_.forEachNode(updateBlocks(), [this](Index node) {
-        const double m = grid_.mass[node];
-        grid_.vOld[node] = m > 0 ? Vec<dim>(grid_.momentum[node] / m) : Vec<dim>::Zero();
-    });
+    transfer_->velocityFromMomentum(fieldsOf(grid_), updateBlocks());
     bc_.constrain(grid_, grid_.vOld, time_->value() - dt_);
     applyVelocityConstraints(grid_.vOld, time_->value() - dt_);
     copyToGhosts(grid_.vOld);
@@ -273,23 +270,7 @@ template <int dim> void MpmSimulation<dim>::remapMomentum() {
 
 template <int dim> void MpmSimulation<dim>::updateGridVelocity(double dt) {
     auto timer = timer_(PhaseTimer::Grid);
-    const Vec<dim> g = gravity_;
-    const double alpha = damping_;
-    const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
-    grid_.forEachNode(updateBlocks(), [&](Index node) {
-        const double m = grid_.mass[node];
-        if (m > 0) {
-            // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
-            const Vec<dim> v0 = grid_.momentum[node] / m;
-            Vec<dim> f = grid_.force[node] + m * g;
-            // Local non-viscous damping f ← f - α |f| sign(v), per component.
-            if (damped)
-                for (int a = 0; a < dim; ++a)
-                    f[a] -= alpha * std::fabs(f[a]) * ((v0[a] > 0) - (v0[a] < 0));
-            grid_.vOld[node] = v0;
-            grid_.v[node] = v0 + (dt / m) * f;
-        }
-    });
+    transfer_->updateVelocity(fieldsOf(grid_), updateBlocks(), gravity_, damping_, dt);
     bc_.constrainUpdate(grid_, gravity_, time_->value(), dt, reactions_);
     applyVelocityConstraints(grid_.v, time_->value());
     copyToGhosts(grid_.vOld, grid_.v);

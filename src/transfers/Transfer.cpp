@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <type_traits>
 
 namespace mpm {
@@ -48,6 +49,38 @@ inline Double8 join(const Double4& lo, const Double4& hi) {
     return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
 }
 
+/// The grid update of the cpu backend (Transfer::updateVelocity), the node loop of
+/// GridLayout::forEachNode.
+template <int dim>
+void cpuUpdateVelocity(const NodeFields<dim>& g, const std::vector<Index>& blocks,
+                       const Vec<dim>& gravity, double damping, double dt) {
+    const double alpha = damping;
+    const bool damped = alpha > 0; // loop-invariant: hoisted out of the node loop
+    g.layout->forEachNode(blocks, [&](Index node) {
+        const double m = g.mass[node];
+        if (m > 0) {
+            // [000 Eq. 14]: (m v)ⁿ⁺¹ = m v + Δt f, with gravity f_ext = m g.
+            const Vec<dim> v0 = g.momentum[node] / m;
+            Vec<dim> f = g.force[node] + m * gravity;
+            // Local non-viscous damping f ← f - α |f| sign(v), per component.
+            if (damped)
+                for (int a = 0; a < dim; ++a)
+                    f[a] -= alpha * std::fabs(f[a]) * ((v0[a] > 0) - (v0[a] < 0));
+            g.vOld[node] = v0;
+            g.v[node] = v0 + (dt / m) * f;
+        }
+    });
+}
+
+/// v_old = (m v)/m of the cpu backend (Transfer::velocityFromMomentum).
+template <int dim>
+void cpuVelocityFromMomentum(const NodeFields<dim>& g, const std::vector<Index>& blocks) {
+    g.layout->forEachNode(blocks, [&g](Index node) {
+        const double m = g.mass[node];
+        g.vOld[node] = m > 0 ? Vec<dim>(g.momentum[node] / m) : Vec<dim>::Zero();
+    });
+}
+
 /// Transfers for kernel K; `Affine` selects APIC, otherwise the FLIP/PIC blend with ratio η.
 template <int dim, class K, bool Affine> class TransferImpl final : public Transfer<dim> {
     static constexpr int W = K::Width;
@@ -80,14 +113,15 @@ public:
     /// The stencils are evaluated where they are first needed: by the step's first scatter,
     /// each point's in P2G's own pass over it (one pass over the points fewer), or, should
     /// another transfer come first, by ensureWeights.
-    void computeWeights(const Particles<dim>& p, const Grid<dim>& g) override {
-        grid_ = &g;
-        points_ = &p;
+    void computeWeights(const PointFields<dim>& p, const NodeFields<dim>& g) override {
+        grid_ = g;
+        points_ = p;
+        this->weighted_ = p.size();
         st_.resize(p.size());
         pending_ = true;
     }
 
-    void scatter(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& sort,
+    void scatter(const PointFields<dim>& p, const NodeFields<dim>& g, const BlockSort<dim>& sort,
                  bool withStress) override {
         if (withStress)
             scatterImpl<true, true>(p, g, sort);
@@ -95,12 +129,13 @@ public:
             scatterImpl<true, false>(p, g, sort);
     }
 
-    void scatterForce(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& sort) override {
+    void scatterForce(const PointFields<dim>& p, const NodeFields<dim>& g,
+                      const BlockSort<dim>& sort) override {
         scatterImpl<false, true>(p, g, sort);
     }
 
     void scatterPointForces(const std::vector<Index>& ids, const std::vector<Vec<dim>>& f,
-                            Grid<dim>& g) const override {
+                            const NodeFields<dim>& g) const override {
         ensureWeights();
         for (std::size_t k = 0; k < ids.size(); ++k)
             forStencil(st_[ids[k]], [&](Index node, double wgt, const Vec<dim>&) {
@@ -108,11 +143,10 @@ public:
             });
     }
 
-    void scatterScalar(const std::vector<double>& q, NodeArray<double>& out,
-                       const BlockSort<dim>& sort) const override {
+    void scatterScalar(const double* q, double* out, const BlockSort<dim>& sort) const override {
         ensureWeights();
         const auto& order = sort.order();
-        sort.forEachBlockByColour(worthThreads(static_cast<Index>(q.size())), [&](Index, auto r) {
+        sort.forEachBlockByColour(worthThreads(this->weighted_), [&](Index, auto r) {
             for (Index j = r.begin; j < r.end; ++j) {
                 const Index i = order[j];
                 forStencil(st_[i], [&](Index node, double wgt, const Vec<dim>&) {
@@ -122,10 +156,9 @@ public:
         });
     }
 
-    void gatherScalar(const NodeArray<double>& q, std::vector<double>& out) const override {
+    void gatherScalar(const double* q, double* out) const override {
         ensureWeights();
         const Index n = static_cast<Index>(st_.size());
-        out.resize(n);
 #pragma omp parallel for if (worthThreads(n)) schedule(static)
         for (Index i = 0; i < n; ++i) {
             double sum = 0.0;
@@ -135,7 +168,7 @@ public:
         }
     }
 
-    void velocityGradient(Particles<dim>& p, const Grid<dim>& g) override {
+    void velocityGradient(const PointFields<dim>& p, const NodeFields<dim>& g) override {
         ensureWeights();
         const Index n = static_cast<Index>(p.size());
         const double invH = g.invH();
@@ -150,12 +183,23 @@ public:
         }
     }
 
-    GatherStats gather(Particles<dim>& p, Grid<dim>& g, double dt, bool withGradient) override {
+    GatherStats gather(const PointFields<dim>& p, const NodeFields<dim>& g, double dt,
+                       bool withGradient) override {
         ensureWeights();
         const bool flip = !Affine && ratio_ > 0.0;
         if (withGradient)
             return flip ? gatherImpl<true, true>(p, g, dt) : gatherImpl<true, false>(p, g, dt);
         return flip ? gatherImpl<false, true>(p, g, dt) : gatherImpl<false, false>(p, g, dt);
+    }
+
+    void velocityFromMomentum(const NodeFields<dim>& g,
+                              const std::vector<Index>& blocks) const override {
+        cpuVelocityFromMomentum(g, blocks);
+    }
+
+    void updateVelocity(const NodeFields<dim>& g, const std::vector<Index>& blocks,
+                        const Vec<dim>& gravity, double damping, double dt) const override {
+        cpuUpdateVelocity(g, blocks, gravity, damping, dt);
     }
 
     std::size_t stencilBytes() const override {
@@ -168,7 +212,7 @@ private:
         evaluate(i, st_[i]);
     }
     inline void evaluate(Index i, Stencil& s) const {
-        const Vec<dim> xh = (points_->x[i] - grid_->origin()) * grid_->invH();
+        const Vec<dim> xh = (points_.x[i] - grid_.origin()) * grid_.invH();
         for (int d = 0; d < dim; ++d) {
             s.base[d] = kernel_.eval(xh[d], s.w[d], s.dw[d]);
             if constexpr (Affine) s.fx[d] = xh[d] - s.base[d];
@@ -189,7 +233,7 @@ private:
     inline void offsets(const Stencil& s, Index (&o)[dim][W]) const {
         for (int d = 0; d < dim; ++d)
             for (int a = 0; a < W; ++a)
-                o[d][a] = grid_->axisOffset(d, s.base[d] + a);
+                o[d][a] = grid_.axisOffset(d, s.base[d] + a);
     }
 
     /// Visit the x-rows of a particle's stencil: row(first node index, weight w_r,
@@ -353,7 +397,7 @@ private:
     }
 
     /// Visit the lines of the active blocks, block by block in parallel: fn(node, line).
-    template <class Fn> static void forActiveLines(Grid<dim>& g, Fn&& fn) {
+    template <class Fn> static void forActiveLines(const NodeFields<dim>& g, Fn&& fn) {
         const auto& active = g.activeBlocks();
         const Index na = static_cast<Index>(active.size());
         constexpr Index Nb = Grid<dim>::NodesPerBlock;
@@ -366,13 +410,14 @@ private:
     /// P2G: the active lines zeroed, every particle scattered into them (scatterOne; blocks of
     /// one colour in parallel, colours in turn), then the sums added to the node fields.
     template <bool Momentum, bool Stress>
-    void scatterImpl(const Particles<dim>& p, Grid<dim>& g, const BlockSort<dim>& sort) {
+    void scatterImpl(const PointFields<dim>& p, const NodeFields<dim>& g,
+                     const BlockSort<dim>& sort) {
         forActiveLines(g, [](Index, NodeLine& q) { q = NodeLine{}; });
         const double h = g.h();
         const double invH = g.invH();
         const auto& order = sort.order();
-        NodeLine* lines = g.lines.data();
-        assert(&p == points_ && "scatter of other points than computeWeights'");
+        NodeLine* lines = g.lines;
+        assert(p.x == points_.x && "scatter of other points than computeWeights'");
         // P2G reads the points in block order (order[]), whose jumps the hardware prefetchers do
         // not follow: the fields it reads are fetched `Ahead` points early (block2D P2G −10 to
         // −16 %, docs/benchmarks.md).
@@ -441,7 +486,7 @@ private:
     }
 
     template <bool Grad, bool Flip>
-    GatherStats gatherImpl(Particles<dim>& p, Grid<dim>& g, double dt) {
+    GatherStats gatherImpl(const PointFields<dim>& p, const NodeFields<dim>& g, double dt) {
         forActiveLines(g, [&g](Index k, NodeLine& q) {
             q = NodeLine{};
             for (int d = 0; d < dim; ++d) {
@@ -449,8 +494,8 @@ private:
                 if constexpr (Flip) q.v[4 + d] = g.v[k][d] - g.vOld[k][d];
             }
         });
-        const NodeLine* lines = g.lines.data();
-        const Index n = static_cast<Index>(p.size());
+        const NodeLine* lines = g.lines;
+        const Index n = p.size();
         const double invH = g.invH();
         const double eta = ratio_;
         double vmax2 = 0.0, move2 = 0.0, ke = 0.0;
@@ -508,9 +553,9 @@ private:
     K kernel_;
     double ratio_;
     mutable std::vector<Stencil> st_;
-    const Grid<dim>* grid_ = nullptr;        ///< the node numbering (axisOffset) of computeWeights
-    const Particles<dim>* points_ = nullptr; ///< the points of computeWeights (their x^n)
-    mutable bool pending_ = false;           ///< st_ not yet evaluated for this step
+    NodeFields<dim> grid_;         ///< the node numbering (axisOffset) of computeWeights
+    PointFields<dim> points_;      ///< the points of computeWeights (their x^n)
+    mutable bool pending_ = false; ///< st_ not yet evaluated for this step
 };
 
 /// APIC needs a kernel with constant inertia D_p (its `InertiaFactor`: the quadratic and cubic
@@ -547,35 +592,44 @@ struct ApicScheme final : TransferScheme {
     ApicScheme(const Dictionary&, bool) { affine = true; }
 };
 
-/// A kernel (system/mpmSchemes `kernel`, the family `kernels`): it builds the transfer of a
-/// scheme with its kernel type, so that the transfer's loops are instantiated for it once.
-/// Registered by MPM_REGISTER_KERNEL; KernelOf<dim, K> is built with the particle half-width.
-template <int dim> struct KernelChoice {
-    virtual ~KernelChoice() = default;
-    virtual std::unique_ptr<Transfer<dim>> make(const TransferScheme& scheme,
-                                                const Dictionary& schemes) const = 0;
-};
 template <int dim> using KernelRegistry = Registry<KernelChoice<dim>, double>;
 
+/// The kernel K as registered: built with the particle half-width l_p/h (GIMP's; clipped to
+/// 0.49), it describes itself to any backend and instantiates the cpu backend's loops for K.
 template <int dim, class K> class KernelOf final : public KernelChoice<dim> {
 public:
     KernelOf(const Dictionary&, double particleHalfWidth) {
         if constexpr (HasHalfWidth<K>::value) kernel_.l = std::min(particleHalfWidth, 0.49);
     }
-    std::unique_ptr<Transfer<dim>> make(const TransferScheme& scheme,
-                                        const Dictionary& schemes) const override {
-        if (!scheme.affine)
-            return std::make_unique<TransferImpl<dim, K, false>>(kernel_, scheme.ratio);
+    KernelFunction function() const override {
+        KernelFunction f;
+        f.name = K::Name;
+        f.width = K::Width;
+        if constexpr (HasHalfWidth<K>::value) f.halfWidth = kernel_.l;
+        if constexpr (HasInertia<K>::value) f.inertiaFactor = K::InertiaFactor;
+        f.eval = [k = kernel_](double xh, double* w, double* dw) { return k.eval(xh, w, dw); };
+        return f;
+    }
+    std::unique_ptr<Transfer<dim>> makeCpu(const TransferOptions& options) const override {
+        if (!options.affine)
+            return std::make_unique<TransferImpl<dim, K, false>>(kernel_, options.ratio);
         if constexpr (HasInertia<K>::value)
             return std::make_unique<TransferImpl<dim, K, true>>(kernel_, 0.0);
         else
-            schemes.error("transfer", std::string("apic needs kernel quadraticBSpline or "
-                                                  "cubicBSpline (constant D_p), not ") +
-                                          K::Name);
+            throw std::logic_error("internal error: APIC without a constant inertia");
     }
 
 private:
     K kernel_;
+};
+
+/// The optimised loops of this file (`backend: cpu`, the default).
+template <int dim> struct CpuBackend final : Backend<dim> {
+    explicit CpuBackend(const Dictionary&) {}
+    std::unique_ptr<Transfer<dim>> make(const KernelChoice<dim>& kernel,
+                                        const TransferOptions& options) const override {
+        return kernel.makeCpu(options);
+    }
 };
 
 } // namespace
@@ -628,6 +682,17 @@ MPM_REGISTER(TransferSchemeRegistry, ApicScheme, "apic");
 MPM_SCHEMA("transfers", "apic",
            {"affine PIC (quadraticBSpline or cubicBSpline kernels)", {}, "transfer: apic"});
 
+MPM_FAMILY_INFO("backends",
+                {"backend in system/mpmSchemes (a word; default cpu)", "3. system/mpmSchemes", {}});
+MPM_FAMILY(BackendRegistry<2>, 2, "backends");
+MPM_FAMILY(BackendRegistry<3>, 3, "backends");
+MPM_REGISTER_DIMS(BackendRegistry, CpuBackend, "cpu");
+MPM_SCHEMA("backends", "cpu",
+           {"the optimised loops: stencils factored per row, SIMD node lines, blocks by colour "
+            "on OpenMP threads (the default)",
+            {},
+            "backend: cpu"});
+
 template <int dim>
 std::unique_ptr<Transfer<dim>> Transfer<dim>::create(const Dictionary& schemes,
                                                      double particleHalfWidth) {
@@ -638,7 +703,14 @@ std::unique_ptr<Transfer<dim>> Transfer<dim>::create(const Dictionary& schemes,
         schemes.isDict("transfer")
             ? TransferSchemeRegistry::create(schemes.subDict("transfer"), true)
             : selectByWord<TransferSchemeRegistry>(schemes, "transfer", "", false);
-    return kernel->make(*scheme, schemes);
+    const KernelFunction f = kernel->function();
+    if (scheme->affine && !(f.inertiaFactor > 0))
+        schemes.error("transfer",
+                      "apic needs kernel quadraticBSpline or cubicBSpline (constant D_p), not " +
+                          f.name);
+    const std::unique_ptr<Backend<dim>> backend =
+        selectByWord<BackendRegistry<dim>>(schemes, "backend", "cpu");
+    return backend->make(*kernel, TransferOptions{scheme->affine, scheme->ratio});
 }
 
 template class Transfer<2>;

@@ -115,7 +115,8 @@ TEST(KeySchema, EveryFamilyOfTheSolverIsInTheCatalogue) {
                                          "initialStress",
                                          "seedingMethods",
                                          "bodyMotions",
-                                         "decompositionMethods"};
+                                         "decompositionMethods",
+                                         "backends"};
     EXPECT_EQ(names, expected);
 }
 
