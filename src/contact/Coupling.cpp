@@ -188,35 +188,46 @@ Index Coupling<dim>::enforceGap(Particles<dim>& p,
         impulses_.assign(n, Vec<dim>::Zero());
         const bool project = law.nonPenetrating();
         double push = 0.0;
-#pragma omp parallel for if (worthThreads(n)) schedule(static) reduction(+ : moved)            \
-    reduction(min : minGap, minGapBefore) reduction(max : push)
-        for (Index k = 0; k < n; ++k) {
+        // One point; the reductions' variables are passed in (a thread's own copies).
+        auto visit = [&](Index k, Index& nMoved, double& gapMin, double& gapMinBefore,
+                         double& pushMax) {
             const Index i = near[k];
             const double gap = project ? law.minimumGap(radius(p.volume0[i])) : -1e300;
             if (phi0[k] - reach > std::max(gap, 0.0)) {
-                minGap = std::min(minGap, phi0[k] - reach); // cannot be closer: skipped
-                minGapBefore = std::min(minGapBefore, phi0[k] - reach);
-                continue;
+                gapMin = std::min(gapMin, phi0[k] - reach); // cannot be closer: skipped
+                gapMinBefore = std::min(gapMinBefore, phi0[k] - reach);
+                return;
             }
             Vec<dim> nk;
             const double phi = body.distance(imageOf(images, p.x[i], body), nk);
-            minGapBefore = std::min(minGapBefore, phi);
+            gapMinBefore = std::min(gapMinBefore, phi);
             if (phi >= gap) {
-                minGap = std::min(minGap, phi);
-                continue;
+                gapMin = std::min(gapMin, phi);
+                return;
             }
             // Back to ξ_min along the normal; no approaching velocity. The momentum the point
             // loses goes to the body (below, in order: deterministic).
             p.x[i] += (gap - phi) * nk;
-            push = std::max(push, gap - phi);
+            pushMax = std::max(pushMax, gap - phi);
             const double vn = (p.v[i] - body.velocityAt(imageOf(images, p.x[i], body))).dot(nk);
             if (vn < 0) {
                 p.v[i] -= vn * nk;
                 impulses_[k] = p.mass[i] * vn * nk;
             }
-            ++moved;
+            ++nMoved;
             Vec<dim> n2;
-            minGap = std::min(minGap, body.distance(imageOf(images, p.x[i], body), n2));
+            gapMin = std::min(gapMin, body.distance(imageOf(images, p.x[i], body), n2));
+        };
+        // A short loop runs outside any parallel region: even a region of one thread costs a
+        // futex system call (5–10 µs on the project's machine), once per body and step.
+        if (worthThreads(n)) {
+#pragma omp parallel for schedule(static) reduction(+ : moved)                                   \
+    reduction(min : minGap, minGapBefore) reduction(max : push)
+            for (Index k = 0; k < n; ++k)
+                visit(k, moved, minGap, minGapBefore, push);
+        } else {
+            for (Index k = 0; k < n; ++k)
+                visit(k, moved, minGap, minGapBefore, push);
         }
         for (Index k = 0; k < n; ++k)
             if (impulses_[k].squaredNorm() > 0)
@@ -259,9 +270,17 @@ void Coupling<dim>::nearPoints(const RigidBody<dim>& body, const PeriodicLattice
     const Index n = static_cast<Index>(near_.size());
     phi_.resize(n);
     normals_.resize(n);
-#pragma omp parallel for if (worthThreads(n)) schedule(static)
-    for (Index k = 0; k < n; ++k)
+    auto visit = [&](Index k) {
         phi_[k] = body.distance(imageOf(images, p.x[near_[k]], body), normals_[k]);
+    };
+    if (worthThreads(n)) { // a short loop outside any region (enforceGap)
+#pragma omp parallel for schedule(static)
+        for (Index k = 0; k < n; ++k)
+            visit(k);
+    } else {
+        for (Index k = 0; k < n; ++k)
+            visit(k);
+    }
 }
 
 template <int dim>

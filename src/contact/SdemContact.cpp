@@ -107,12 +107,26 @@ void SdemContact::vertexEdge(BodyList& bodies, int v, int e, const Vec<2>& shift
     const SpheroPolygon& sv = *bv.shape().spheroPolygon();
     const SpheroPolygon& se = *be.shape().spheroPolygon();
     const double reach = sv.radius + se.radius;
-    // Edge end points in the world frame.
-    std::vector<Vec<2>> ye(se.vertices.size());
-    for (std::size_t k = 0; k < ye.size(); ++k)
+    // Edge end points in the world frame, and ρ² = max |Y_k − c_e|²: every point of an edge lies
+    // within ρ of the edge body's centroid c_e (convexity).
+    std::vector<Vec<2>>& ye = edgeEnds_;
+    ye.resize(se.vertices.size());
+    double rho2 = 0;
+    for (std::size_t k = 0; k < ye.size(); ++k) {
         ye[k] = be.position() + be.rotation() * se.vertices[k];
+        rho2 = std::max(rho2, (ye[k] - be.position()).squaredNorm());
+    }
+    // A vertex with |V − c_e| ≥ ρ + a_i + a_j + m has d(V, E) ≥ a_i + a_j for every edge (ξ ≤ 0,
+    // no contact) and skips the edge loop; m = 1e-10 × the coordinates' size covers the rounding
+    // of d and ρ (≈ 1e-15 of it), so a skipped vertex is one whose every ξ computes ≤ 0.
+    const Vec<2>& ce = be.position();
+    const double rho = std::sqrt(rho2);
+    const double size = ce.cwiseAbs().maxCoeff() + bv.position().cwiseAbs().maxCoeff() +
+                        shiftV.cwiseAbs().maxCoeff() + bv.shape().boundingRadius() + rho + reach;
+    const double far = rho + reach + 1e-10 * size;
     for (int k = 0; k < static_cast<int>(sv.vertices.size()); ++k) {
         const Vec<2> x = bv.position() + shiftV + bv.rotation() * sv.vertices[k];
+        if ((x - ce).squaredNorm() >= far * far) continue;
         for (int l = 0; l < se.edgeCount(); ++l) {
             Vec<2> y;
             const double d = closestOnSegment(x, ye[l], ye[se.edgeEnd(l)], y);

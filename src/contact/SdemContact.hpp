@@ -25,6 +25,8 @@ namespace mpm {
 /// to it (sliding). +F acts on the vertex's body and −F on the edge's body, both at p (torques
 /// about each centroid). History per (vertex body, edge body, vertex, edge), dropped when ξ = 0.
 /// Two bodies with a = 0 (e.g. two boxes) never touch under this law: a warning says so.
+/// A vertex farther than ρ_j + a_i + a_j from body j's centroid (ρ_j: the largest distance of
+/// j's vertices from it) touches no edge of j and is not tested against them (same result).
 ///
 /// Optional normal dashpot from a restitution e ∈ [0.14, 1]: c = 2 ζ √(m* k_n), m* = m_i m_j/(m_i +
 /// m_j) (a fixed body's mass infinite), ζ the damping ratio with which one vertex–edge contact of a
@@ -79,6 +81,7 @@ private:
     std::vector<Vec<2>> built_; ///< centroids at the last build
     int builds_ = 0;
     std::set<std::array<int, 2>> warned_;
+    std::vector<Vec<2>> edgeEnds_; ///< vertexEdge's scratch: the edge body's vertices, world
 
     /// c_i − c_j through the minimum image where one image alone can touch (else direct).
     Vec<2> separation(const RigidBody<2>& a, const RigidBody<2>& b) const;

@@ -7,7 +7,7 @@
 
 PROBE.txt is the output of build/tests/rooflineProbe (its ROOFLINE lines); LOG a solver log
 with the "Phase timing" table (tests/benchmarks/run.sh -o DIR keeps them); MODEL one of the
-phase models below (block3D, block3DPlastic, block2D). For every phase the script takes the
+phase models below (block3D, block3DPlastic, block3DViscoelastic, block2D). For every phase the script takes the
 model's FLOP and bytes per particle-step and the log's phase time, and prints and plots
   achieved GFLOP/s = FLOP/p-step × particles × steps / phase seconds,
   achieved GB/s    = bytes/p-step × particles × steps / phase seconds,
@@ -40,7 +40,32 @@ def field_bytes(dim):
     return 8 + 4 + vec + mat3 + 8 + 8 + 8 + 8 + mat + mat3 + mat + mat + vec, 13
 
 
-def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNodes):
+def viscoelastic_model(d):
+    """(FLOP, bytes) per point-step of the constitutive phase of `viscoelasticMuI` (3D):
+    Particles::updateDeformation with the rate-form volume [002 Eq. 76], then the 8-lane
+    update of src/materials/ViscoelasticMuI.cpp (counted as written; x − 0.0 and the like not)."""
+    assert d == 3
+    # updateDeformation: 1 + Δt L 12, (1 + Δt L) F 45; V ← V exp(Δt tr L): tr 2, × Δt 1, exp
+    # (glibc, a table and a degree-5 polynomial: ~12), × V 1.
+    defFlop = 12 + 45 + 2 + 1 + 12 + 1
+    defBytes = 72 + 2 * 72 + 4 + 2 * 8  # L, F rw, material, volume rw
+    # Gather, per lane (scalar): D 6, Δt w 9, t² 5, Rodrigues' series a and b 11 each (4
+    # divisions each: t²/6, /20, /42, /72), ρ = m/V 1.
+    gather = 6 + 9 + 5 + 2 * 11 + 1
+    # The 8-lane block: t² 5, Q 36, Q σᵉ 45, (Q σᵉ) Qᵀ (6 entries) 30, tr D 2, λΔt tr D 1,
+    # σᵉ_tr 15, D_dev 3 + tr/3 1, σ_tr 16 (ϑ tr D 1), p_tr 3, s 3, τ_tr 14 (√), μ_s p 1,
+    # α 2 (√), S₂ 1, B 2, H 3, disc 3, τ 4 (√, ÷), γ̇ 2, τ/τ_tr 1, dpScale 2, σ 9, σᵉ 27.
+    lanes = (5 + 36 + 45 + 30 + 2 + 1 + 15 + 4 + 16 + 3 + 3 + 14 + 1 + 2 + 1 + 2 + 3 + 3 + 4 + 2 + 1
+             + 2 + 9 + 27)
+    # Scatter: εp += γ̇ Δt 2, the finite check 13.
+    scatter = 2 + 13
+    # ids, L, σᵉ rw, m, V, σ w+wa, flowState w+wa, γ̇ w+wa, εp rw
+    consBytes = 8 + 72 + 2 * 72 + 8 + 8 + 2 * 72 + 2 * 4 + 2 * 8 + 2 * 8
+    return defFlop + gather + lanes + scatter, defBytes + consBytes
+
+
+def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNodes,
+                viscoelastic=False):
     """{phase: (FLOP, bytes)} per particle-step for the quadratic B-spline, APIC, USL, Hencky
     (plastic: Drucker–Prager return map) step of src/transfers/Transfer.cpp,
     src/particles/BlockSort.cpp, src/materials/HenckyLaw.hpp / HenckyReturnMap.hpp."""
@@ -59,6 +84,8 @@ def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNod
     sortBytes = vec + 2 * 4 + 4 + 2 * (4 + 8)
     weightFlop = 2 * d + d * (1 + 1 + 3 + 6 + 1 + 1)
     fb, nfields = field_bytes(d)
+    if viscoelastic:  # model state permuted with the rest: elasticStress, plasticStrainRate, flowState
+        fb, nfields = fb + 72 + 8 + 4, nfields + 3
     permuteBytes = 3 * fb + 8 * nfields + sortBytes + 2 * 8  # + materialParticles_ lists
     sort = (sortFlop + sortFlop / 20, sortBytes + permuteBytes / 20)
     # --- P2G: grid clear (mass + 4 vectors per active node, write-allocate), then per
@@ -116,6 +143,8 @@ def phase_model(dim, plastic, logTerms, expShare, expTerms, activeNodes, massNod
         consFlop = 12 + 90 + logFlop + 21 + 6
         consBytes = 8 + mat + 2 * 72 + 8 + 8 + 2 * 72  # ids, L, be rw, V⁰, V, σ w+wa
     cons = (defFlop + consFlop, defBytes + consBytes)
+    if viscoelastic:
+        cons = viscoelastic_model(d)
     return {"sort": sort, "P2G": p2g, "grid": grid, "G2P": g2p, "constitutive": cons}
 
 
@@ -127,6 +156,8 @@ CASES = {
                     activeNodes=0.4091, massNodes=0.1759),
     "block3DPlastic": dict(dim=3, plastic=True, logTerms=1.384, expShare=0.875, expTerms=4.458,
                            activeNodes=0.4091, massNodes=0.1761),
+    "block3DViscoelastic": dict(dim=3, plastic=False, logTerms=0.0, expShare=0.0, expTerms=0.0,
+                                activeNodes=0.4091, massNodes=0.1759, viscoelastic=True),
     "block2D": dict(dim=2, plastic=False, logTerms=1.279, expShare=0.0, expTerms=0.0,
                     activeNodes=0.2781, massNodes=0.2569),
 }
@@ -245,7 +276,7 @@ def plot(points, peakF, scalarF, bw, threads, out, title):
             label=f"scalar FMA ceiling {scalarF:.0f} GFLOP/s")
     colours = {"sort": "tab:gray", "P2G": "tab:red", "grid": "tab:green", "G2P": "tab:blue",
                "constitutive": "tab:purple"}
-    markers = {"block3D": "o", "block3DPlastic": "s", "block2D": "^"}
+    markers = {"block3D": "o", "block3DPlastic": "s", "block3DViscoelastic": "D", "block2D": "^"}
     for name, ph, ai, gf in points:
         ax.plot(ai, gf, markers.get(name, "x"), color=colours[ph], ms=8, mec="k", mew=0.5)
     handles = [plt.Line2D([], [], ls="", marker="o", color=c, mec="k", mew=0.5, label=p)

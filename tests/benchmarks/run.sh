@@ -4,8 +4,11 @@
 #
 #   tests/benchmarks/run.sh [-n RUNS] [-t "THREADS ..."] [-o DIR] [-i] [case ...]
 #
-#   case     a folder of tests/benchmarks/ (block3D, block3DPlastic, block2D) or a path to a
-#            case folder (default: block3D)
+#   case     a folder of tests/benchmarks/ (block3D, block3DPlastic, block3DViscoelastic, block2D,
+#            sparseSlope) or a path to a case folder (default: block3D); or a generated case,
+#            polygonSettling:N (N pentagons settled into a heap, then measured) or
+#            polygonSettling:N:matrix (N pentagons in sand), written once by
+#            tests/benchmarks/polygonSettling/run.py --prepare (its --threads is 1)
 #   -n RUNS  whole runs per case and thread count (default 1); the figures are the median,
 #            min and max over the runs, the phase table is the median run's
 #   -t LIST  thread counts, space- or comma-separated (default "1 2")
@@ -31,7 +34,7 @@ runs=1
 threads="1 2"
 keep=""
 guard=0
-usage() { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
+usage() { sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-0}"; }
 while getopts "n:t:o:ih" opt; do
     case $opt in
     n) runs=$OPTARG ;;
@@ -56,8 +59,9 @@ done
 [ -x "$solver" ] || { echo "run.sh: no solver at $solver (build with ./Allwmake)" >&2; exit 2; }
 cases=("$@")
 [ ${#cases[@]} -eq 0 ] && cases=(block3D)
+generated() { [[ $1 =~ ^polygonSettling:[1-9][0-9]*(:matrix)?$ ]]; }
 for c in "${cases[@]}"; do
-    [ -d "$root/tests/benchmarks/$c" ] || [ -d "$c" ] ||
+    generated "$c" || [ -d "$root/tests/benchmarks/$c" ] || [ -d "$c" ] ||
         { echo "run.sh: no case '$c' (neither tests/benchmarks/$c nor a folder)" >&2; exit 2; }
 done
 # Busy CPU time of the machine so far [1/100 s]: user nice system irq softirq steal.
@@ -82,6 +86,14 @@ for c in "${cases[@]}"; do
     src=$root/tests/benchmarks/$c
     [ -d "$src" ] || src=$c
     name=$(basename "$src")
+    if generated "$c"; then # written (and settled) once, then copied for each run
+        IFS=: read -r _ count variant <<<"$c"
+        name=polygonSettling-N$count${variant:+-$variant}
+        src=$work/prepared-$name
+        echo "# preparing $c (tests/benchmarks/polygonSettling/run.py --prepare)"
+        python3 "$root/tests/benchmarks/polygonSettling/run.py" --prepare "$src" --count "$count" \
+            --solver "$solver" ${variant:+--matrix}
+    fi
     for t in $threads; do
         : >"$work/rates"
         discarded=0
