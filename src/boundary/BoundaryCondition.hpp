@@ -18,7 +18,9 @@ struct FaceNormal {
 };
 
 /// A boundary condition of a patch of a grid face (`constant/grid` boundary.<face>[.<patch>]
-/// `type:`), chosen through the registry. The virtual calls are per patch, never per node: each
+/// `type:`), chosen through the registry: a rule that constrains the patch's node velocities.
+/// The face kinds that constrain no node, `open` and `periodic`, are not conditions but handled
+/// by the set (FaceKind, BoundaryConditions). The virtual calls are per patch, never per node: each
 /// call runs over the patch's node list.
 template <int dim> class BoundaryCondition {
 public:
@@ -40,16 +42,10 @@ public:
     /// [m/s]: a node pressed against the wall takes it as its normal velocity (0 for a fixed
     /// wall).
     virtual double wallNormalVelocity(const FaceNormal& /*n*/, double /*t*/) const { return 0.0; }
-    /// Material may leave through the patch (particles beyond it are removed).
-    virtual bool open() const { return false; }
-    /// The face is one side of a periodic pair (no constraint; the lattice is folded instead).
-    virtual bool periodic() const { return false; }
 
     /// Build the condition named by `dict`'s `type:`; the caller reads the patch keys (box,
     /// from, until) of the same map and then checks its keys (BoundaryConditions::readPatch).
     static std::unique_ptr<BoundaryCondition> create(const Dictionary& dict);
-    /// Names of the registered conditions, sorted.
-    static std::vector<std::string> typeNames();
 };
 
 template <int dim> using BoundaryConditionRegistry = Registry<BoundaryCondition<dim>>;

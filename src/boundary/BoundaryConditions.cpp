@@ -30,6 +30,16 @@ template <int dim> std::string point(const Vec<dim>& x) {
 } // namespace
 
 template <int dim>
+void BoundaryConditions<dim>::checkType(const Dictionary& dict, const std::string& key,
+                                        const std::string& type) {
+    if (faceKind(type) == FaceKind::constrained &&
+        BoundaryConditionRegistry<dim>::table().count(type) == 0)
+        dict.error(key, "unknown type '" + type +
+                            "'; valid types are: " + joined(boundaryTypeNames<dim>()) +
+                            " (mpmFoam -list boundaryConditions shows their keys)");
+}
+
+template <int dim>
 BoundaryConditions<dim>::BoundaryConditions(const Dictionary& gridDict, const Grid<dim>& grid)
     : grid_(grid),
       slip_(BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", "(default)"))) {
@@ -46,7 +56,7 @@ BoundaryConditions<dim>::BoundaryConditions(const Dictionary& gridDict, const Gr
 
     std::array<bool, dim> periodic{};
     for (int a = 0; a < dim; ++a) {
-        const bool lo = faces_[2 * a].periodic, hi = faces_[2 * a + 1].periodic;
+        const bool lo = faces_[2 * a].periodic(), hi = faces_[2 * a + 1].periodic();
         if (lo != hi) {
             const std::string p = Grid<dim>::faceName(lo ? 2 * a : 2 * a + 1);
             const std::string q = Grid<dim>::faceName(lo ? 2 * a + 1 : 2 * a);
@@ -60,17 +70,17 @@ BoundaryConditions<dim>::BoundaryConditions(const Dictionary& gridDict, const Gr
     lattice_ = std::make_unique<PeriodicLattice<dim>>(grid, periodic);
 
     for (int f = 0; f < NumFaces; ++f)
-        if (!faces_[f].periodic) assignNodes(faceDicts[f] ? &*faceDicts[f] : nullptr, f);
+        if (!faces_[f].periodic()) assignNodes(faceDicts[f] ? &*faceDicts[f] : nullptr, f);
     touched_.reset(grid.numNodes());
     contact_.reset(grid.numNodes());
     for (const Face& face : faces_)
         for (const Patch& p : face.patches)
-            hasUnilateral_ = hasUnilateral_ || p.condition->unilateral();
+            hasUnilateral_ = hasUnilateral_ || (p.condition && p.condition->unilateral());
     // An inactive patch hands its nodes to the face's box-less patch or to slip.
     for (const Face& face : faces_)
         for (const Patch& p : face.patches)
-            if (!face.periodic && (p.from > -std::numeric_limits<double>::infinity() ||
-                                   p.until < std::numeric_limits<double>::infinity()))
+            if (!face.periodic() && (p.from > -std::numeric_limits<double>::infinity() ||
+                                     p.until < std::numeric_limits<double>::infinity()))
                 hasUnilateral_ = true;
 }
 
@@ -78,12 +88,11 @@ template <int dim>
 typename BoundaryConditions<dim>::Patch
 BoundaryConditions<dim>::wordPatch(const Dictionary& parent, const std::string& key) const {
     const std::string type = parent.getString(key);
-    const auto& table = BoundaryConditionRegistry<dim>::table();
-    if (table.find(type) == table.end())
-        parent.error(key, "unknown type '" + type +
-                              "'; valid types are: " + joined(BoundaryCondition<dim>::typeNames()));
     Patch p;
     p.name = key;
+    p.kind = faceKind(type);
+    if (p.kind != FaceKind::constrained) return p;
+    checkType(parent, key, type);
     try {
         p.condition = BoundaryCondition<dim>::create(
             Dictionary::fromString("{type: " + type + "}", parent.fileName()));
@@ -101,7 +110,13 @@ BoundaryConditions<dim>::readPatch(const Dictionary& dict, const std::string& na
     const int axis = f / 2;
     Patch p;
     p.name = name;
-    p.condition = BoundaryCondition<dim>::create(dict);
+    const std::string type = dict.getString("type");
+    p.kind = faceKind(type);
+    checkType(dict, "type", type);
+    if (p.kind == FaceKind::constrained)
+        p.condition = BoundaryCondition<dim>::create(dict);
+    else
+        setKeyHelp(dict, "boundaryConditions", type);
     if (dict.has("box")) {
         if (whole)
             dict.error("box", "a face map with `type` is one patch covering the whole face; to "
@@ -122,7 +137,8 @@ BoundaryConditions<dim>::readPatch(const Dictionary& dict, const std::string& na
     p.until = dict.getScalarOr("until", p.until);
     if (!(p.until > p.from))
         dict.error("until", "the window [from, until) is empty: until must exceed from");
-    if (p.condition->periodic() && (!whole || p.boxed || dict.has("from") || dict.has("until")))
+    if (p.kind == FaceKind::periodic &&
+        (!whole || p.boxed || dict.has("from") || dict.has("until")))
         dict.error("type", "periodic acts on a whole face, always: write " +
                                Grid<dim>::faceName(f) +
                                ": periodic (and its opposite face "
@@ -135,10 +151,7 @@ template <int dim> void BoundaryConditions<dim>::readFace(const Dictionary& boun
     const std::string key = Grid<dim>::faceName(f);
     Face& face = faces_[f];
     if (!boundary.has(key)) {
-        Patch p;
-        p.name = key;
-        p.condition = BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", ""));
-        face.patches.push_back(std::move(p));
+        face.patches.push_back(slipPatch(key));
     } else if (!boundary.isDict(key)) {
         face.patches.push_back(wordPatch(boundary, key));
     } else {
@@ -155,7 +168,7 @@ template <int dim> void BoundaryConditions<dim>::readFace(const Dictionary& boun
             for (const std::string& name : names) {
                 Patch p = d.isDict(name) ? readPatch(d.subDict(name), name, f, false)
                                          : wordPatch(d, name);
-                if (p.condition->periodic())
+                if (p.kind == FaceKind::periodic)
                     d.error(name, "periodic acts on a whole face, always: write " + key +
                                       ": periodic (and its opposite face periodic too)");
                 if (p.boxed) {
@@ -168,20 +181,24 @@ template <int dim> void BoundaryConditions<dim>::readFace(const Dictionary& boun
                     rest = std::move(p);
                 }
             }
-            if (!rest) {
-                rest.emplace();
-                rest->name = key;
-                rest->condition =
-                    BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", ""));
-            }
+            if (!rest) rest = slipPatch(key);
             face.patches.push_back(std::move(*rest));
             for (auto& p : boxed)
                 face.patches.push_back(std::move(p));
         }
     }
     for (const Patch& p : face.patches)
-        hasOpen_ |= p.condition->open();
-    face.periodic = face.patches.front().condition->periodic();
+        hasOpen_ |= p.kind == FaceKind::open;
+    if (face.patches.front().kind == FaceKind::periodic) face.partner = f ^ 1;
+}
+
+template <int dim>
+typename BoundaryConditions<dim>::Patch
+BoundaryConditions<dim>::slipPatch(const std::string& name) {
+    Patch p;
+    p.name = name;
+    p.condition = BoundaryCondition<dim>::create(Dictionary::fromString("{type: slip}", ""));
+    return p;
 }
 
 template <int dim> void BoundaryConditions<dim>::assignNodes(const Dictionary* faceDict, int f) {
@@ -270,7 +287,7 @@ template <int dim>
 void BoundaryConditions<dim>::selectActive(const Grid<dim>& g,
                                            const std::function<bool(Index)>& take) {
     for (Face& face : faces_) {
-        if (face.periodic) continue;
+        if (face.periodic()) continue;
         for (Patch& p : face.patches) {
             for (Index i : p.live) // nodes the material left keep no contact
                 if (!g.isActive(i / Grid<dim>::NodesPerBlock)) contact_[i] = 0;
@@ -288,12 +305,12 @@ void BoundaryConditions<dim>::selectActive(const Grid<dim>& g,
 }
 
 template <int dim>
-const BoundaryCondition<dim>& BoundaryConditions<dim>::governing(const Face& face, std::size_t k,
+const BoundaryCondition<dim>* BoundaryConditions<dim>::governing(const Face& face, std::size_t k,
                                                                  double t) const {
     const Patch& p = face.patches[k];
-    if (p.active(t)) return *p.condition;
-    if (k > 0 && face.patches.front().active(t)) return *face.patches.front().condition;
-    return *slip_;
+    if (p.active(t)) return p.condition.get();
+    if (k > 0 && face.patches.front().active(t)) return face.patches.front().condition.get();
+    return slip_.get();
 }
 
 template <int dim>
@@ -301,17 +318,18 @@ void BoundaryConditions<dim>::constrain(const Grid<dim>& g, NodeArray<Vec<dim>>&
                                         double t) const {
     for (int f = 0; f < NumFaces; ++f) {
         const Face& face = faces_[f];
-        if (face.periodic) continue;
+        if (face.periodic()) continue;
         const FaceNormal normal{f / 2, f % 2 == 0 ? -1.0 : 1.0};
         for (std::size_t k = 0; k < face.patches.size(); ++k) {
             const Patch& p = face.patches[k];
-            const BoundaryCondition<dim>& condition = governing(face, k, t);
-            if (!condition.unilateral()) {
-                condition.apply(p.live, normal, g.mass, v, t);
+            const BoundaryCondition<dim>* condition = governing(face, k, t);
+            if (!condition) continue; // open: no constraint
+            if (!condition->unilateral()) {
+                condition->apply(p.live, normal, g.mass, v, t);
                 continue;
             }
             const unsigned bit = 1u << normal.axis;
-            const double wn = condition.wallNormalVelocity(normal, t);
+            const double wn = condition->wallNormalVelocity(normal, t);
             for (Index i : p.live)
                 if (g.mass[i] != 0 && (contact_[i] & bit)) v[i][normal.axis] = wn;
         }
@@ -353,7 +371,6 @@ Vec<dim> BoundaryConditions<dim>::constrainAndReact(const BoundaryCondition<dim>
                                                     const Patch& p, const FaceNormal& n,
                                                     Grid<dim>& g, const Vec<dim>& gravity, double t,
                                                     double dt) {
-    if (condition.open()) return Vec<dim>::Zero(); // no condition: the node stays untouched
     // v⁻ of each owner node: the undamped update for the first condition acting on the node
     // this step, the velocity the previous one left otherwise (edges and corners).
     before_.resize(static_cast<std::size_t>(p.liveOwners));
@@ -387,22 +404,24 @@ void BoundaryConditions<dim>::constrainUpdate(Grid<dim>& g, const Vec<dim>& grav
     for (int f = 0; f < NumFaces; ++f) {
         Face& face = faces_[f];
         Vec<dim> reaction = Vec<dim>::Zero();
-        if (!face.periodic) {
+        if (!face.periodic()) {
             const FaceNormal normal{f / 2, f % 2 == 0 ? -1.0 : 1.0};
             for (std::size_t k = 0; k < face.patches.size(); ++k) {
                 Patch& p = face.patches[k];
-                const BoundaryCondition<dim>& condition = governing(face, k, t);
+                const BoundaryCondition<dim>* condition = governing(face, k, t); // null: open
                 // Contact as the rule will find it: the updated velocity enters the wall.
                 const unsigned bit = 1u << normal.axis;
-                const bool unilateral = condition.unilateral();
-                const double wn = unilateral ? condition.wallNormalVelocity(normal, t) : 0.0;
+                const bool unilateral = condition && condition->unilateral();
+                const double wn = unilateral ? condition->wallNormalVelocity(normal, t) : 0.0;
                 for (Index i : p.live) {
                     const bool pressed = unilateral && g.mass[i] != 0 &&
                                          normal.sign * (g.v[i][normal.axis] - wn) > 0;
                     contact_[i] = static_cast<unsigned char>(pressed ? contact_[i] | bit
                                                                      : contact_[i] & ~bit);
                 }
-                p.reaction = constrainAndReact(condition, p, normal, g, gravity, t, dt);
+                // An open patch leaves its nodes untouched and takes no reaction.
+                p.reaction = condition ? constrainAndReact(*condition, p, normal, g, gravity, t, dt)
+                                       : Vec<dim>::Zero();
                 reaction += p.reaction;
             }
         }
@@ -415,7 +434,7 @@ template <int dim> bool BoundaryConditions<dim>::open(int f, const Vec<dim>& x, 
     const double h = grid_.h();
     const Vec<dim> y = lattice_->wrapPosition(x);
     for (const Patch& p : faces_[f].patches) {
-        if (!p.condition->open() || !p.active(t)) continue;
+        if (p.kind != FaceKind::open || !p.active(t)) continue;
         if (!p.boxed) return true;
         bool inside = true;
         for (int d = 0; d < dim; ++d)
@@ -433,7 +452,7 @@ template <int dim> Index BoundaryConditions<dim>::removeOutflow(Particles<dim>& 
     std::size_t numOpen = 0;
     for (int f = 0; f < NumFaces; ++f)
         for (const Patch& q : faces_[f].patches)
-            if (q.condition->open() && q.active(t)) {
+            if (q.kind == FaceKind::open && q.active(t)) {
                 faces[numOpen] = f;
                 limit[numOpen++] =
                     f % 2 == 0 ? grid_.lo()[f / 2] - grid_.h() : grid_.hi()[f / 2] + grid_.h();

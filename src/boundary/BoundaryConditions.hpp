@@ -2,6 +2,7 @@
 #pragma once
 
 #include "boundary/BoundaryCondition.hpp"
+#include "boundary/FaceKind.hpp"
 #include "boundary/PeriodicLattice.hpp"
 #include "case/Dictionary.hpp"
 #include "grid/Grid.hpp"
@@ -40,6 +41,10 @@ public:
 
     /// Reads `gridDict`'s optional `boundary` map (every face slip without it) and checks it.
     BoundaryConditions(const Dictionary& gridDict, const Grid<dim>& grid);
+
+    /// Every valid `type:` of a face or patch, sorted: the registered conditions and the face
+    /// kinds open and periodic.
+    static std::vector<std::string> typeNames() { return boundaryTypeNames<dim>(); }
 
     /// Constrain the P2G velocity v (g.vOld) at time t (the start of the step, tⁿ). On a
     /// unilateral patch (slip, friction, smooth velocity) the normal velocity is set to the
@@ -122,7 +127,8 @@ public:
 private:
     struct Patch {
         std::string name;
-        std::unique_ptr<BoundaryCondition<dim>> condition;
+        FaceKind kind = FaceKind::constrained;
+        std::unique_ptr<BoundaryCondition<dim>> condition; ///< constrained patches only
         bool boxed = false;
         Vec<dim> boxMin = Vec<dim>::Zero(), boxMax = Vec<dim>::Zero();
         Vec<dim> extentMin = Vec<dim>::Zero(), extentMax = Vec<dim>::Zero(); ///< its nodes
@@ -141,16 +147,22 @@ private:
     };
     struct Face {
         std::vector<Patch> patches; ///< [0]: the box-less patch (implicit slip if none given)
-        bool periodic = false;
+        int partner = -1;           ///< a periodic face's partner (the opposite face), else -1
+        bool periodic() const { return partner >= 0; }
     };
 
     void readFace(const Dictionary& boundary, int f);
     Patch readPatch(const Dictionary& dict, const std::string& name, int f, bool whole) const;
     Patch wordPatch(const Dictionary& parent, const std::string& key) const;
+    /// An unknown `type` (read from `key` of `dict`) is an input error listing typeNames().
+    static void checkType(const Dictionary& dict, const std::string& key, const std::string& type);
+    /// A patch of face `name` with the implicit condition slip.
+    static Patch slipPatch(const std::string& name);
     void assignNodes(const Dictionary* faceDict, int f);
     void groupByBlock(Patch& p) const;
-    /// The condition governing patch k of face f at time t.
-    const BoundaryCondition<dim>& governing(const Face& face, std::size_t k, double t) const;
+    /// The condition governing patch k of face f at time t; nullptr where an open patch
+    /// governs (no constraint).
+    const BoundaryCondition<dim>* governing(const Face& face, std::size_t k, double t) const;
     /// Apply `condition` to the updated velocities of p's live nodes and return the reaction,
     /// the force the material exerts on the patch, F = Σ m_i (v_i⁻ − v_i⁺)/Δt over its owner
     /// nodes [N] (per metre in 2D) [000 §4.2]: v⁻ is the undamped update v⁰ + Δt (f/m + g) for

@@ -9,10 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <random>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -595,9 +597,50 @@ TEST(BoundaryConditions, UnknownTypeListsTheValidOnes) {
          {"boundary: {xMin: sticky}\n", "boundary: {xMin: {type: sticky}}\n",
           "boundary: {xMin: {w: {type: sticky}}}\n", "boundary: {xMin: {w: sticky}}\n"}) {
         SCOPED_TRACE(b);
-        expectMessage(boundaryError(b), {"unknown type 'sticky'", "friction", "noSlip", "open",
-                                         "periodic", "slip", "velocity"});
+        expectMessage(boundaryError(b),
+                      {"unknown type 'sticky'", "friction, noSlip, open, periodic, roller, slip, "
+                                                "velocity (mpmFoam -list boundaryConditions"});
     }
+}
+
+TEST(BoundaryConditions, OpenAndPeriodicAreFaceKindsOfTheSetNotConditions) {
+    // The registry holds only the conditions that constrain nodes; the set reads the face kinds
+    // open and periodic itself, and the user sees all of them as types of the family.
+    for (const std::string kind : {"open", "periodic"}) {
+        SCOPED_TRACE(kind);
+        EXPECT_EQ(BoundaryConditionRegistry<2>::table().count(kind), 0u);
+        EXPECT_EQ(BoundaryConditionRegistry<3>::table().count(kind), 0u);
+        EXPECT_NE(faceKind(kind), FaceKind::constrained);
+        const auto names = BoundaryConditions<3>::typeNames();
+        EXPECT_NE(std::find(names.begin(), names.end(), kind), names.end());
+        std::ostringstream list;
+        ModelCatalogue::list(list, "boundaryConditions");
+        EXPECT_NE(list.str().find("\n  " + kind + " (2D, 3D): "), std::string::npos) << list.str();
+    }
+    EXPECT_EQ(faceKind("slip"), FaceKind::constrained);
+    // A face kind's map takes only the patch keys; an unknown one names them.
+    expectMessage(boundaryError("boundary: {yMin: {type: open, friction: 0.3}}\n"),
+                  {"friction", "The keys of open are: type, box, from, until"});
+    // Open and periodic faces constrain nothing and take no reaction.
+    Scene<2> s(box2D, "boundary: {xMin: periodic, xMax: periodic, yMin: open, yMax: open}\n");
+    Grid<2>& g = s.grid;
+    clearNodes(g);
+    for (Index i = 0; i < g.numNodes(); ++i) {
+        g.mass[i] = 1;
+        g.vOld[i] = g.v[i] = Vec<2>(0.3, -0.7);
+    }
+    BoundaryConditions<2>::Reactions r;
+    s.bc.constrainUpdate(g, Vec<2>::Zero(), 0.0, 0.01, r);
+    s.bc.constrain(g, g.vOld, 0.0);
+    for (Index i = 0; i < g.numNodes(); ++i) {
+        EXPECT_EQ(g.v[i], Vec<2>(0.3, -0.7));
+        EXPECT_EQ(g.vOld[i], Vec<2>(0.3, -0.7));
+    }
+    for (int f = 0; f < 4; ++f)
+        EXPECT_EQ(r[f], Vec<2>::Zero()) << Grid<2>::faceName(f);
+    EXPECT_TRUE(s.bc.hasOpen());
+    EXPECT_TRUE(s.bc.periodic(0));
+    EXPECT_FALSE(s.bc.periodic(1));
 }
 
 TEST(BoundaryConditions, OtherInputErrors) {
