@@ -150,6 +150,12 @@ private:
 #define MPM_FAMILY(RegistryType, dim, name)                                                        \
     static const RegistryType::Join MPM_CONCAT(mpmFamily, __COUNTER__)(name, dim)
 
+/// Join both registries of an alias template `Family<dim>` (Family<2>, Family<3>) to the family
+/// `name`: MPM_FAMILY_DIMS(MaterialRegistry, "materials").
+#define MPM_FAMILY_DIMS(Family, name)                                                              \
+    MPM_FAMILY(Family<2>, 2, name);                                                                \
+    MPM_FAMILY(Family<3>, 3, name)
+
 /// Describe the family `name` (where it is selected, its docs/caseFormat.md section, the keys
 /// every type reads): MPM_FAMILY_INFO("materials", {"constant/materials: …", "6. …", {…}}).
 #define MPM_FAMILY_INFO(name, ...)                                                                 \

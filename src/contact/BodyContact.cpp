@@ -17,8 +17,7 @@ std::unique_ptr<BodyContactLaw<dim>> BodyContactLaw<dim>::create(const Dictionar
 MPM_FAMILY_INFO("bodyContact", {"type in constant/bodyContact",
                                 "8. constant/rigidBodies",
                                 {{"type", "word", "-", "required", "the body-body contact law"}}});
-MPM_FAMILY(BodyContactRegistry<2>, 2, "bodyContact");
-MPM_FAMILY(BodyContactRegistry<3>, 3, "bodyContact");
+MPM_FAMILY_DIMS(BodyContactRegistry, "bodyContact");
 
 template <int dim>
 void ContactProbes<dim>::update(const std::vector<std::unique_ptr<RigidBody<dim>>>& bodies) {

@@ -47,8 +47,7 @@ MPM_FAMILY_INFO("couplingLaws",
                    "s_p/r_p of the friction smoothing [004 Eq. 36] (> 0; not with sdem)"},
                   {"gasifiedPoints", "word", "-", "grid",
                    "how a gasified point takes its contact force: grid or local"}}});
-MPM_FAMILY(CouplingLawRegistry<2>, 2, "couplingLaws");
-MPM_FAMILY(CouplingLawRegistry<3>, 3, "couplingLaws");
+MPM_FAMILY_DIMS(CouplingLawRegistry, "couplingLaws");
 
 namespace {
 

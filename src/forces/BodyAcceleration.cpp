@@ -30,7 +30,6 @@ template class BodyAcceleration<3>;
 MPM_FAMILY_INFO("bodyAccelerations", {"type in constant/g",
                                       "5. constant/g",
                                       {{"type", "word", "-", "constant", "how g varies in time"}}});
-MPM_FAMILY(BodyAccelerationRegistry<2>, 2, "bodyAccelerations");
-MPM_FAMILY(BodyAccelerationRegistry<3>, 3, "bodyAccelerations");
+MPM_FAMILY_DIMS(BodyAccelerationRegistry, "bodyAccelerations");
 
 } // namespace mpm

@@ -51,7 +51,6 @@ MPM_FAMILY_INFO("materials",
                  "6. constant/materials",
                  {{"type", "word", "-", "required", "the model"},
                   {"density", "scalar", "kg/m³", "required", "initial density ρ₀ (> 0)"}}});
-MPM_FAMILY(MaterialRegistry<2>, 2, "materials");
-MPM_FAMILY(MaterialRegistry<3>, 3, "materials");
+MPM_FAMILY_DIMS(MaterialRegistry, "materials");
 
 } // namespace mpm

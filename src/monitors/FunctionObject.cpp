@@ -90,7 +90,6 @@ MPM_FAMILY_INFO("functionObjects",
                   {"writeControl", "word", "-", "timeStep", "the schedule: timeStep or runTime"},
                   {"writeInterval", "integer or scalar", "steps or s", "1 or 0",
                    "every N steps (timeStep), or every interval (runTime; 0: every step)"}}});
-MPM_FAMILY(FunctionObjectRegistry<2>, 2, "functionObjects");
-MPM_FAMILY(FunctionObjectRegistry<3>, 3, "functionObjects");
+MPM_FAMILY_DIMS(FunctionObjectRegistry, "functionObjects");
 
 } // namespace mpm

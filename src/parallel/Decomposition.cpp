@@ -262,8 +262,7 @@ MPM_FAMILY_INFO("decompositionMethods",
                 {"method in system/decomposeParDict",
                  "12. system/decomposeParDict",
                  {{"method", "word", "-", "required", "how the blocks are shared out"}}});
-MPM_FAMILY(DecompositionMethodRegistry<2>, 2, "decompositionMethods");
-MPM_FAMILY(DecompositionMethodRegistry<3>, 3, "decompositionMethods");
+MPM_FAMILY_DIMS(DecompositionMethodRegistry, "decompositionMethods");
 MPM_REGISTER_DIMS(DecompositionMethodRegistry, SimpleDecomposition, "simple");
 MPM_REGISTER_DIMS(DecompositionMethodRegistry, HierarchicalDecomposition, "hierarchical");
 MPM_REGISTER_DIMS(DecompositionMethodRegistry, BisectionDecomposition, "bisection");

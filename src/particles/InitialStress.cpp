@@ -71,8 +71,7 @@ MPM_FAMILY_INFO("initialStress",
                 {"<set>.initialStress (a word, or .type of a map) in constant/particles",
                  "7. constant/particles",
                  {{"type", "word", "-", "none", "the initial stress"}}});
-MPM_FAMILY(InitialStressRegistry<2>, 2, "initialStress");
-MPM_FAMILY(InitialStressRegistry<3>, 3, "initialStress");
+MPM_FAMILY_DIMS(InitialStressRegistry, "initialStress");
 
 MPM_REGISTER_DIMS(InitialStressRegistry, NoInitialStress, "none");
 MPM_REGISTER_DIMS(InitialStressRegistry, GeostaticStress, "geostatic");

@@ -74,8 +74,7 @@ MPM_FAMILY_INFO("initialVelocity",
                 {"<set>.velocity.type in constant/particles (or a vector: uniform)",
                  "7. constant/particles",
                  {{"type", "word", "-", "required", "the velocity field"}}});
-MPM_FAMILY(InitialVelocityRegistry<2>, 2, "initialVelocity");
-MPM_FAMILY(InitialVelocityRegistry<3>, 3, "initialVelocity");
+MPM_FAMILY_DIMS(InitialVelocityRegistry, "initialVelocity");
 
 MPM_REGISTER_DIMS(InitialVelocityRegistry, UniformVelocity, "uniform");
 MPM_REGISTER_DIMS(InitialVelocityRegistry, AxialModeVelocity, "axialMode");

@@ -189,8 +189,7 @@ private:
 MPM_FAMILY_INFO("regions", {"<set>.region.type in constant/particles",
                             "7. constant/particles",
                             {{"type", "word", "-", "required", "the region's shape"}}});
-MPM_FAMILY(RegionRegistry<2>, 2, "regions");
-MPM_FAMILY(RegionRegistry<3>, 3, "regions");
+MPM_FAMILY_DIMS(RegionRegistry, "regions");
 
 MPM_REGISTER_DIMS(RegionRegistry, BoxRegion, "box");
 MPM_REGISTER_ONLY(3, RegionRegistry, BallRegion<3>, "sphere");

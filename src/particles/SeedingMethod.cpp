@@ -71,8 +71,7 @@ MPM_FAMILY_INFO("seedingMethods",
                 {"<set>.seeding.method in constant/particles",
                  "7. constant/particles",
                  {{"method", "word", "-", "regular", "how the region is filled"}}});
-MPM_FAMILY(SeedingMethodRegistry<2>, 2, "seedingMethods");
-MPM_FAMILY(SeedingMethodRegistry<3>, 3, "seedingMethods");
+MPM_FAMILY_DIMS(SeedingMethodRegistry, "seedingMethods");
 
 MPM_REGISTER_DIMS(SeedingMethodRegistry, RegularSeeding, "regular");
 MPM_REGISTER_DIMS(SeedingMethodRegistry, PoissonDiskSeeding, "poissonDisk");

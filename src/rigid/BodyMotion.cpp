@@ -213,8 +213,7 @@ private:
 MPM_FAMILY_INFO("bodyMotions", {"<body>.motion (a word, or .type of a map) in constant/rigidBodies",
                                 "8. constant/rigidBodies",
                                 {{"type", "word", "-", "free", "how the body moves"}}});
-MPM_FAMILY(BodyMotionRegistry<2>, 2, "bodyMotions");
-MPM_FAMILY(BodyMotionRegistry<3>, 3, "bodyMotions");
+MPM_FAMILY_DIMS(BodyMotionRegistry, "bodyMotions");
 
 MPM_REGISTER_DIMS(BodyMotionRegistry, FreeMotion, "free");
 MPM_REGISTER_DIMS(BodyMotionRegistry, FixedMotion, "fixed");

@@ -13,7 +13,6 @@ template class Shape<3>;
 MPM_FAMILY_INFO("shapes", {"<body>.shape.type in constant/rigidBodies",
                            "8. constant/rigidBodies",
                            {{"type", "word", "-", "required", "the body's shape"}}});
-MPM_FAMILY(ShapeRegistry<2>, 2, "shapes");
-MPM_FAMILY(ShapeRegistry<3>, 3, "shapes");
+MPM_FAMILY_DIMS(ShapeRegistry, "shapes");
 
 } // namespace mpm

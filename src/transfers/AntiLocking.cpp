@@ -8,8 +8,7 @@ namespace mpm {
 MPM_FAMILY_INFO("antiLocking", {"antiLocking in system/mpmSchemes (a word; default none)",
                                 "3. system/mpmSchemes",
                                 {}});
-MPM_FAMILY(AntiLockingRegistry<2>, 2, "antiLocking");
-MPM_FAMILY(AntiLockingRegistry<3>, 3, "antiLocking");
+MPM_FAMILY_DIMS(AntiLockingRegistry, "antiLocking");
 
 namespace {
 

@@ -647,8 +647,7 @@ template <int dim> struct CpuBackend final : Backend<dim> {
         })
 
 MPM_FAMILY_INFO("kernels", {"kernel in system/mpmSchemes (a word)", "3. system/mpmSchemes", {}});
-MPM_FAMILY(KernelRegistry<2>, 2, "kernels");
-MPM_FAMILY(KernelRegistry<3>, 3, "kernels");
+MPM_FAMILY_DIMS(KernelRegistry, "kernels");
 MPM_REGISTER_KERNEL(LinearKernel);
 MPM_SCHEMA("kernels", "linear",
            {"linear hat functions (C0; grid-crossing noise)", {}, "kernel: linear"});
@@ -684,8 +683,7 @@ MPM_SCHEMA("transfers", "apic",
 
 MPM_FAMILY_INFO("backends",
                 {"backend in system/mpmSchemes (a word; default cpu)", "3. system/mpmSchemes", {}});
-MPM_FAMILY(BackendRegistry<2>, 2, "backends");
-MPM_FAMILY(BackendRegistry<3>, 3, "backends");
+MPM_FAMILY_DIMS(BackendRegistry, "backends");
 MPM_REGISTER_DIMS(BackendRegistry, CpuBackend, "cpu");
 MPM_SCHEMA("backends", "cpu",
            {"the optimised loops: stencils factored per row, SIMD node lines, blocks by colour "
