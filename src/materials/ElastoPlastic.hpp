@@ -27,12 +27,12 @@
 //    `multiplier` that the laws' return maps accept, registered with MPM_REGISTER_PLASTICITY
 //    like MuI.cpp (a missing member is a static_assert naming it).
 //  - Viscosity (an object read from the dictionary, Viscosity.hpp): NoViscosity (the default:
-//    every branch on it is `if constexpr`, so an inviscid material compiles to the code it had
-//    before the policy existed) or KelvinVoigtViscosity. A viscous composition carries σᵉ beside
-//    σ, γ̇ᵖ and the flow state (ViscoelasticFields), runs the law's viscousUpdate (the hypoelastic
-//    law only: ViscoelasticReturnMap.hpp), reads `criticalDensity` as the separation density
-//    of that return map instead of the trans-phase keys, and takes its volume from the rate.
-//    `viscoelasticMuI` = HypoelasticLaw × TanMuIPlasticity × KelvinVoigtViscosity
+//    every branch on it is `if constexpr`, so an inviscid material compiles to the per-point code
+//    it had before the policy existed) or KelvinVoigtViscosity. A viscous composition carries σᵉ
+//    beside σ, γ̇ᵖ and the flow state (ViscoelasticFields), runs the law's viscousUpdate (the
+//    hypoelastic law only: ViscoelasticReturnMap.hpp), reads `criticalDensity` as the separation
+//    density of that return map instead of the trans-phase keys, and takes its volume from the
+//    rate. `viscoelasticMuI` = HypoelasticLaw × TanMuIPlasticity × KelvinVoigtViscosity
 //    (ViscoelasticMuI.cpp, MPM_REGISTER_COMPOSITION).
 //  - Options: the trans-phase relation [000 Eq. 10] (transPhase, criticalDensity) of plastic
 //    materials, passed to the kernels as ρ_c (0: off).

@@ -9,7 +9,7 @@
 // σᵉ of the elastic law, σᵛ a viscous stress on the viscoelastic part of the rate. Chosen at
 // compile time, as the law and the plasticity:
 //  - NoViscosity (the default): σ = σᵉ, the inviscid kernels; no per-point branch on a zero
-//    viscosity, the compiled code of an inviscid material is that of a material with no policy.
+//    viscosity: an inviscid material has the per-point code it had before the policy existed.
 //  - KelvinVoigtViscosity: σᵛ = ϑ tr D 1 + 2η D_dev (`viscoelasticMuI`).
 // A viscous policy (viscous = true) makes ElastoPlastic carry σᵉ beside σ (the `elasticStress`
 // field) and run the law's viscous return map (ViscoelasticReturnMap.hpp), which reads the policy
