@@ -181,4 +181,32 @@ struct MuIFlow {
     }
 };
 
+/// μ(I) of the viscoelastic model [002 Eq. 43–44]: τ = μ(I) p, μ(I) = μ_s + (μ₂ − μ_s)/(I₀/I + 1),
+/// I = γ̇ᵖ d √(ρ_s/p), with μ_s = tan φ_s and μ₂ = tan φ₂ in τ = √J₂ [002 §4]; isochoric, no
+/// tension. The viscous return map (ViscoelasticReturnMap.hpp) returns with it in closed form
+/// [002 Eq. 55–58].
+struct TanMuIFlow {
+    double muS;           ///< μ_s [-]
+    double mu2;           ///< μ₂ [-]
+    double I0;            ///< I₀ [-]
+    double grainDiameter; ///< d [m]
+    double grainDensity;  ///< ρ_s [kg/m³]
+
+    /// α/√p_tr = I₀ G̃ Δt/(d √ρ_s) [Pa^½] of [002 Eq. 55], for G̃ [Pa] and Δt [s].
+    double alphaCoefficient(double Gt, double dt) const {
+        return I0 * Gt * dt / (grainDiameter * std::sqrt(grainDensity));
+    }
+    /// Above the static yield surface, τ_tr > μ_s p_tr [002 Eq. 53] (τ, p [Pa]).
+    bool flows(double tauTr, double pTr) const { return tauTr > muS * pTr; }
+    /// τ after the return [Pa] [002 Eq. 55–58], the smaller root of τ = μ(I) p_tr with
+    /// I = I₀ (τ_tr − τ)/α: S₀ = μ_s p_tr, S₂ = μ₂ p_tr, B = S₂ + τ_tr + α, H = S₂ τ_tr + S₀ α,
+    /// τ = 2H/(B + √(B² − 4H)) (α = alphaCoefficient √p_tr [Pa]).
+    double shearStress(double tauTr, double pTr, double alpha) const {
+        const double S0 = muS * pTr, S2 = mu2 * pTr;
+        const double B = S2 + tauTr + alpha, H = S2 * tauTr + S0 * alpha;
+        const double disc = B * B - 4.0 * H;
+        return 2.0 * H / (B + std::sqrt(disc > 0.0 ? disc : 0.0));
+    }
+};
+
 } // namespace mpm

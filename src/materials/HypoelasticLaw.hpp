@@ -5,6 +5,7 @@
 #include "materials/FlowRules.hpp"
 #include "materials/HypoelasticReturnMap.hpp"
 #include "materials/Material.hpp"
+#include "materials/ViscoelasticReturnMap.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +18,10 @@ namespace mpm {
 ///   σ̇ = C : D + W σ − σ W,  C_ijkl = K δ_ij δ_kl + G (δ_ik δ_jl + δ_il δ_jk − ⅔ δ_ij δ_kl),
 /// with D = sym L and W = skew L, integrated by forward Euler over the step
 /// (jaumannTrialStress); plastic flow, if any, by the return map of HypoelasticReturnMap.hpp.
-/// The stress is the state (bᵉ stays 1). An elastic-law policy of ElastoPlastic (static
-/// members only).
+/// The stress is the state (bᵉ stays 1). With a viscosity policy (Viscosity.hpp) the state is
+/// the elastic stress σᵉ beside σ, and viscousUpdate runs the viscous return map
+/// (ViscoelasticReturnMap.hpp: exact rotation [002 Eq. 52]). An elastic-law policy of
+/// ElastoPlastic (static members only).
 struct HypoelasticLaw {
     static constexpr ElasticLaw kind = ElasticLaw::hypoelastic;
     /// The energy is a few products per point: ElastoPlastic uses the plain loop.
@@ -41,6 +44,14 @@ struct HypoelasticLaw {
         const Mat3 dev = s - pr * Mat3::Identity();
         return (pr * pr / (2.0 * c.K) + dev.squaredNorm() / (4.0 * c.G)) * p.volume[i];
     }
+    /// The same of a stress s [Pa] on a volume V [m³] (per metre of depth in 2D): the energy of
+    /// σᵉ of a viscous material. (strainEnergy keeps its own body: through this function it
+    /// compiles to a reordered loop.)
+    static double complementaryEnergy(const ElasticConstants& c, const Mat3& s, double volume) {
+        const double pr = s.trace() / 3.0;
+        const Mat3 dev = s - pr * Mat3::Identity();
+        return (pr * pr / (2.0 * c.K) + dev.squaredNorm() / (4.0 * c.G)) * volume;
+    }
 
     /// Advance the particles `ids` over dt with the flow rule `flow` (NoFlow: elastic), the
     /// tension cut-off `cutoff` and the trans-phase relation `phase`.
@@ -52,6 +63,18 @@ struct HypoelasticLaw {
             return elasticUpdate(p, ids, dt, c);
         else
             return hypoelasticReturnMapUpdate(p, ids, dt, c, phase, flow, cutoff);
+    }
+
+    /// The viscous update of a material with a viscosity policy `visc` and the flow `flow`
+    /// (viscoelasticReturnMapUpdate: σ, the elastic stress and the flow state of `fields`,
+    /// separation below ρ_c = rhoC [kg/m³]).
+    template <int dim, class Flow, class Viscosity>
+    static Index viscousUpdate(Particles<dim>& p, const std::vector<Index>& ids, double dt,
+                               const ElasticConstants& c, const Flow& flow, const Viscosity& visc,
+                               double rhoC, const ViscoelasticFields& fields) {
+        static_assert(std::is_same_v<Flow, TanMuIFlow>,
+                      "the viscous return map is written for the μ(I) flow of [002] (TanMuIFlow)");
+        return viscoelasticReturnMapUpdate(p, ids, dt, c, flow, visc, rhoC, fields);
     }
 
     /// Elastic update σ ← σ + Δt σ̇. Returns the first particle whose stress is not finite,

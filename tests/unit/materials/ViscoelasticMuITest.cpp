@@ -71,29 +71,31 @@ template <class P> const std::vector<int>& flagNamed(const P& p, const std::stri
 TEST(ViscoelasticMuI, GlassViscositiesFromRestitution) {
     // [002 Eq. 40, 42] for G1 with e = 0.1: ϑ = 175.05, η = 80.79 Pa·s (docs/viscoelastic.md §1).
     const auto m = create<2>("restitution: 0.1\n");
-    EXPECT_NEAR(as(m).bulkViscosity(), 175.05, 0.01);
-    EXPECT_NEAR(as(m).shearViscosity(), 80.79, 0.01);
+    EXPECT_NEAR(as(m).viscosity().bulkViscosity(), 175.05, 0.01);
+    EXPECT_NEAR(as(m).viscosity().shearViscosity(), 80.79, 0.01);
     const ElasticConstants& c = as(m).elasticConstants();
-    EXPECT_NEAR(as(m).shearViscosity() / as(m).bulkViscosity(), c.G / c.K, 1e-15);
-    EXPECT_DOUBLE_EQ(m->pWaveViscosity(),
-                     as(m).bulkViscosity() + 4.0 / 3.0 * as(m).shearViscosity());
+    EXPECT_NEAR(as(m).viscosity().shearViscosity() / as(m).viscosity().bulkViscosity(), c.G / c.K,
+                1e-15);
+    EXPECT_DOUBLE_EQ(m->pWaveViscosity(), as(m).viscosity().bulkViscosity() +
+                                              4.0 / 3.0 * as(m).viscosity().shearViscosity());
     // [002 Eq. 40] for G1 at e = 0.01 and 0.001 (docs/viscoelastic.md §6, inclined plane).
-    EXPECT_NEAR(as(create<2>("restitution: 0.01\n")).bulkViscosity(), 520.0, 0.1);
-    EXPECT_NEAR(as(create<2>("restitution: 0.001\n")).bulkViscosity(), 983.2, 0.1);
+    EXPECT_NEAR(as(create<2>("restitution: 0.01\n")).viscosity().bulkViscosity(), 520.0, 0.1);
+    EXPECT_NEAR(as(create<2>("restitution: 0.001\n")).viscosity().bulkViscosity(), 983.2, 0.1);
 }
 
 TEST(ViscoelasticMuI, KeysAndDefaults) {
     const auto undamped = create<3>("");
-    EXPECT_EQ(as(undamped).bulkViscosity(), 0.0);
-    EXPECT_EQ(as(undamped).shearViscosity(), 0.0);
-    EXPECT_EQ(as(create<3>("restitution: 1\n")).bulkViscosity(), 0.0);
+    EXPECT_EQ(as(undamped).viscosity().bulkViscosity(), 0.0);
+    EXPECT_EQ(as(undamped).viscosity().shearViscosity(), 0.0);
+    EXPECT_EQ(as(create<3>("restitution: 1\n")).viscosity().bulkViscosity(), 0.0);
     EXPECT_DOUBLE_EQ(as(undamped).separationDensity(), 1475.0);
     EXPECT_EQ(undamped->criticalDensity(), 0.0); // contact forces always through the grid
     EXPECT_NEAR(undamped->defaultK0(), 1.0 - std::sin(21.0 * pi / 180.0), 1e-15);
     const auto direct = create<2>("bulkViscosity: 100\n");
     const ElasticConstants& c = as(direct).elasticConstants();
-    EXPECT_DOUBLE_EQ(as(direct).shearViscosity(), c.G / c.K * 100.0);
-    EXPECT_EQ(as(create<2>("bulkViscosity: 100\nshearViscosity: 7\n")).shearViscosity(), 7.0);
+    EXPECT_DOUBLE_EQ(as(direct).viscosity().shearViscosity(), c.G / c.K * 100.0);
+    EXPECT_EQ(as(create<2>("bulkViscosity: 100\nshearViscosity: 7\n")).viscosity().shearViscosity(),
+              7.0);
     EXPECT_EQ(as(create<2>("criticalDensity: 1400\n")).separationDensity(), 1400.0);
 }
 
@@ -190,7 +192,7 @@ Sheared shearSteadily(const std::string& damping, double gammaDot, bool simple, 
     const double I = rate * 1e-3 * std::sqrt(2500.0 / pr);
     const Mat3& sE = p.tensors[0].data[0];
     const Mat3 L = embed3<2>(p.L[0]), W = 0.5 * (L - L.transpose());
-    const double etaOverG = as(m).shearViscosity() / as(m).elasticConstants().G;
+    const double etaOverG = as(m).viscosity().shearViscosity() / as(m).elasticConstants().G;
     return {tau / pr, muOfI(I),          rate,   pr,
             tau,      s(0, 0) - s(1, 1), s - sE, etaOverG * (sE * W - W * sE)};
 }
@@ -264,8 +266,8 @@ TEST(ViscoelasticMuI, ElasticStepIsTheViscoelasticTrial) {
     const Mat3 Ddev = D - D.trace() / 3.0 * Mat3::Identity();
     const Mat3 eTrial =
         -1e4 * Mat3::Identity() + dt * (c.lambda * D.trace() * Mat3::Identity() + 2.0 * c.G * D);
-    const Mat3 sigma = eTrial + as(m).bulkViscosity() * D.trace() * Mat3::Identity() +
-                       2.0 * as(m).shearViscosity() * Ddev;
+    const Mat3 sigma = eTrial + as(m).viscosity().bulkViscosity() * D.trace() * Mat3::Identity() +
+                       2.0 * as(m).viscosity().shearViscosity() * Ddev;
     EXPECT_EQ(flagNamed(p, "flowState")[0], elasticState);
     EXPECT_LT((p.stress[0] - sigma).norm(), 1e-9 * sigma.norm());
     EXPECT_LT((p.tensors[0].data[0] - eTrial).norm(), 1e-9 * eTrial.norm());
