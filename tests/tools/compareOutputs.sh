@@ -6,10 +6,10 @@
 #
 # OLD_BIN, NEW_BIN: folders holding an mpmFoam (a clone of the commit before, built; this
 # tree's bin). Each CASE folder is copied twice to a temporary folder, its endTime set to its
-# writeInterval, and run on one thread with each build. Prints per case SAME (files, a
-# fingerprint: the first 12 hex digits of the md5 of the sorted md5 list) or DIFF and the files
-# that differ; exits 1 if any case differs or fails. docs/notes/refactorChecks.md keeps the
-# fingerprints of the refactors.
+# writeInterval (times deltaT where writeControl is timeStep), and run on one thread with each
+# build. Prints per case SAME (files, a fingerprint: the first 12 hex digits of the md5 of the
+# sorted md5 list) or DIFF and the files that differ; exits 1 if any case differs or fails.
+# docs/notes/refactorChecks.md keeps the fingerprints of the refactors.
 set -uo pipefail
 [ $# -ge 3 ] || { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 old=$(cd "$1" && pwd) new=$(cd "$2" && pwd) || exit 2
@@ -25,6 +25,11 @@ for c in "$@"; do
         rm -rf "$d" && mkdir -p "$d" && cp -R "$c/constant" "$c/system" "$d/"
         [ -d "$c/0" ] && cp -R "$c/0" "$d/"
         dt=$(awk '/^writeInterval:/ {print $2; exit}' "$d/system/controlDict")
+        # A write interval in steps (writeControl: timeStep) is that many initial steps of time.
+        if grep -q '^writeControl: *timeStep' "$d/system/controlDict"; then
+            step=$(awk '/^deltaT:/ {print $2; exit}' "$d/system/controlDict")
+            dt=$(awk -v n="$dt" -v s="$step" 'BEGIN {printf "%.12g", n * s}')
+        fi
         sed -i "s|^endTime:.*|endTime: $dt|" "$d/system/controlDict"
         bin=$old
         [ $v = new ] && bin=$new
